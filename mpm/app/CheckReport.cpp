@@ -1,0 +1,103 @@
+#include "app/CheckReport.hpp"
+
+#include <cmath>
+#include <iomanip>
+#include <ostream>
+
+#include "physics/ClosedForms.hpp"
+#include "physics/Permeability.hpp"
+#include "solver/ColumnBuilder.hpp"
+
+namespace qs {
+
+double expectedSteadyFilterVelocity(const CaseConfig& config) {
+    if (config.gate.mode != GateMode::Pressure) return 0.0;
+    if (config.reservoir.kind == ReservoirKind::OpenFoam) return 0.0;
+    const double g = config.gravity, rho = config.liquid.density, mu = config.liquid.viscosity;
+    const double tail = config.column.overflowLevel ? *config.column.overflowLevel : config.column.waterLevel;
+    const double dh = config.reservoir.head - tail;
+    double tube = 0;  // head loss per filter velocity in the tube, s
+    if (config.reservoir.kind == ReservoirKind::Lumped && config.reservoir.tubeDiameter > 0)
+        tube = closed::tubeResistance(config.reservoir.tubeDiameter, config.reservoir.tubeLength, rho, g, mu) *
+               config.grid.crossSectionArea;
+    // head lost at filter velocity q: sum over layers of L (mu q/kappa + F rho q|q|/sqrt(kappa)) / (rho g)
+    auto loss = [&](double q) {
+        double h = tube * q;
+        for (const auto& layer : config.layers) {
+            const auto& m = config.material(layer.material);
+            const auto law = PermeabilityLaw::from(m);
+            const double k = law.kappa(m.porosity), F = law.ergunFactor(m.porosity);
+            h += layer.thickness * (mu * q / k + F * rho * q * std::abs(q) / std::sqrt(k)) / (rho * g);
+        }
+        return h;
+    };
+    double lo = std::min(0.0, dh), hi = std::max(0.0, dh);
+    double qlo = -1.0, qhi = 1.0;
+    (void)lo; (void)hi;
+    for (int k = 0; k < 200; ++k) {  // bisection: loss(q) is monotonic
+        const double q = 0.5 * (qlo + qhi);
+        (loss(q) < dh ? qlo : qhi) = q;
+    }
+    return 0.5 * (qlo + qhi);
+}
+
+void printCheckReport(const CaseConfig& config, std::ostream& out) {
+    const double g = config.gravity, rho = config.liquid.density, mu = config.liquid.viscosity;
+    const double KL = config.liquid.bulkModulus, h = config.grid.cellSize;
+    out << std::setprecision(4);
+    out << "case " << config.caseDirectory << (config.title.empty() ? "" : ": " + config.title) << "\n";
+    out << "geometry: " << config.grid.dimension << "D, cell " << h << " m, gate z = 0, filter "
+        << config.filterLevel() << " m, sand top " << config.sandTop() << " m, water "
+        << config.column.waterLevel << " m";
+    if (config.column.overflowLevel) out << ", overflow " << *config.column.overflowLevel << " m";
+    out << ", grid top " << config.column.top << " m\n";
+
+    double cMax = std::sqrt(KL / rho);
+    for (const auto& m : config.materials) {
+        const auto law = PermeabilityLaw::from(m);
+        const double n = m.porosity, kappa = law.kappa(n);
+        const double Eoed = closed::oedometricModulus(m.youngsModulus, m.poissonRatio);
+        const auto waves = closed::zeroDragWaveSpeeds(Eoed, KL, n, m.grainDensity, rho);
+        cMax = std::max(cMax, waves.fast);
+        const double K = closed::hydraulicConductivity(kappa, rho, g, mu);
+        out << "material '" << m.name << "' (n0 = " << n << ", n_max = " << m.maxPorosity << ")\n";
+        out << "  critical gradient i_c = (Gs-1)(1-n0)     " << closed::criticalGradient(m.grainDensity, rho, n) << "\n";
+        out << "  permeability kappa(n0)                   " << kappa << " m2\n";
+        out << "  hydraulic conductivity K                 " << K << " m/s\n";
+        if (m.permeability.grainSize > 0)
+            out << "  Kozeny-Carman kappa from grain size      "
+                << closed::kozenyCarman(m.permeability.grainSize, n, m.ergunA) << " m2\n";
+        out << "  Ergun factor F(n0)                       " << law.ergunFactor(n)
+            << (m.ergun ? "" : " (Forchheimer term off)") << "\n";
+        out << "  oedometric modulus E_oed                 " << Eoed << " Pa\n";
+        out << "  wave speeds fast / slow / undrained      " << waves.fast << " / " << waves.slow << " / "
+            << closed::undrainedWaveSpeed(Eoed, KL, n, m.grainDensity, rho) << " m/s\n";
+        out << "  consolidation coefficient c_v            "
+            << closed::consolidationCoefficient(K, rho, g, Eoed, n, KL) << " m2/s\n";
+    }
+    const double dtStable = config.time.courant * h / cMax;
+    out << "time step: c_fast = " << cMax << " m/s, dt = courant h / c_fast = " << dtStable << " s ("
+        << std::llround(config.time.end / (config.time.dt ? *config.time.dt : dtStable))
+        << " steps to t = " << config.time.end << " s)\n";
+    out << "points: " << config.points.solidPerCell << " solid and " << config.points.liquidPerCell
+        << " liquid per sand cell and axis, " << freeWaterPointsPerCell(config)
+        << " liquid per free-water cell vertically\n";
+    if (config.gate.mode == GateMode::Pressure && config.reservoir.kind != ReservoirKind::OpenFoam) {
+        const double tail = config.column.overflowLevel ? *config.column.overflowLevel : config.column.waterLevel;
+        double L = 0;
+        for (const auto& l : config.layers) L += l.thickness;
+        const double i = (config.reservoir.head - tail) / L;
+        const double q = expectedSteadyFilterVelocity(config);
+        out << "reservoir head " << config.reservoir.head << " m over tailwater " << tail
+            << " m: overall gradient " << i << "\n";
+        out << "expected steady filter velocity (Darcy-Forchheimer";
+        if (config.reservoir.kind == ReservoirKind::Lumped && config.reservoir.tubeDiameter > 0) out << " + tube";
+        out << ") " << q << " m/s, flux " << q * config.grid.crossSectionArea << " m3/s\n";
+        const auto& m0 = config.material(config.layers.front().material);
+        if (i > closed::criticalGradient(m0.grainDensity, rho, m0.porosity) && !config.initial.rigidSkeleton)
+            out << "note: the gradient exceeds the critical gradient: the bed will heave and fluidise\n";
+    }
+    out << "case OK\n";
+}
+
+}  // namespace qs

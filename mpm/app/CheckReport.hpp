@@ -1,0 +1,16 @@
+#pragma once
+// `quicksand check CASE`: the derived quantities a user wants to see before a run.
+#include <iosfwd>
+
+#include "io/CaseConfig.hpp"
+
+namespace qs {
+
+/// Expected steady filter velocity (m/s) through the layers in series for the reservoir's
+/// initial head, Darcy-Forchheimer in every layer plus the tube's loss (lumped reservoir).
+/// Zero when there is no outflow level or the gate is not pressure-driven.
+double expectedSteadyFilterVelocity(const CaseConfig& config);
+
+void printCheckReport(const CaseConfig& config, std::ostream& out);
+
+}  // namespace qs

@@ -1,0 +1,70 @@
+#pragma once
+// Shape functions of the structured grid, evaluated one axis at a time (tensor products).
+//
+// Every point touches a fixed stencil of 3 nodes per axis, starting at node s: enough for linear
+// hats (2 non-zero) and for uGIMP with particle half-length lp <= h/2 (3 non-zero). A fixed
+// stencil keeps the transfer loops branch-free and the same for both kinds.
+//   linear: N(r) = max(0, 1 - |r|/h)
+//   uGIMP (Bardenhagen & Kober 2004), r = x - x_i:
+//     |r| < lp            N = 1 - (r^2 + lp^2) / (2 h lp)
+//     lp <= |r| < h - lp  N = 1 - |r|/h
+//     h - lp <= |r| < h+lp N = (h + lp - |r|)^2 / (4 h lp)
+#include <cmath>
+
+#include "core/Types.hpp"
+#include "io/CaseConfig.hpp"
+
+namespace qs {
+
+constexpr int kStencil = 3;  ///< nodes per axis touched by one point
+
+struct AxisWeights {
+    Index start;             ///< first stencil node along this axis
+    Real w[kStencil];        ///< N of the stencil nodes
+    Real dw[kStencil];       ///< dN/dx of the stencil nodes (1/m)
+};
+
+inline void linearHat(Real r, Real h, Real& N, Real& dN) {
+    const Real a = std::abs(r);
+    if (a >= h) { N = 0; dN = 0; return; }
+    N = 1 - a / h;
+    dN = (r > 0 ? -1.0 : 1.0) / h;
+}
+
+inline void gimpHat(Real r, Real h, Real lp, Real& N, Real& dN) {
+    const Real a = std::abs(r);
+    const Real sign = r > 0 ? 1.0 : -1.0;
+    if (a < lp) {
+        N = 1 - (r * r + lp * lp) / (2 * h * lp);
+        dN = -r / (h * lp);
+    } else if (a < h - lp) {
+        N = 1 - a / h;
+        dN = -sign / h;
+    } else if (a < h + lp) {
+        const Real s = h + lp - a;
+        N = s * s / (4 * h * lp);
+        dN = -sign * s / (2 * h * lp);
+    } else {
+        N = 0;
+        dN = 0;
+    }
+}
+
+/// Weights along one axis for a point at x (m from the grid origin) on an axis with `cells` cells.
+inline AxisWeights axisWeights(Real x, Real h, Index cells, ShapeFunctionKind kind, Real lp) {
+    AxisWeights a;
+    const Real xi = x / h;
+    Index c = static_cast<Index>(std::floor(xi));
+    // uGIMP reaches the node below when the point sits in the lower half of its cell.
+    Index s = (kind == ShapeFunctionKind::Gimp && xi - c < 0.5) ? c - 1 : c;
+    s = s < 0 ? 0 : (s > cells - 2 ? cells - 2 : s);
+    a.start = s;
+    for (int k = 0; k < kStencil; ++k) {
+        const Real r = x - (s + k) * h;
+        if (kind == ShapeFunctionKind::Gimp) gimpHat(r, h, lp, a.w[k], a.dw[k]);
+        else linearHat(r, h, a.w[k], a.dw[k]);
+    }
+    return a;
+}
+
+}  // namespace qs

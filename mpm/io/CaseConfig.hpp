@@ -1,0 +1,163 @@
+#pragma once
+// CaseConfig: the validated content of a case directory's case.toml, as a plain struct.
+//
+// Only io/CaseLoader reads TOML; everything else sees this struct (the solver never reads a key
+// by name). Every field is SI; the key it comes from, its unit, default and allowed range are
+// documented in docs/case-format.md, which follows the order of this file.
+//
+// Geometry of a column (vertical axis z, elevations measured from the gate plane z = 0):
+//
+//   z_top      -- top of the background grid
+//   overflow   -- liquid points above it leave the domain and count as outflow
+//   water      -- initial free surface of the liquid
+//   sand top   -- filter + sum of layer thicknesses
+//   filter     -- the permeable gate: solid held, liquid passes (= chamber height)
+//   0          -- chamber bottom: the gate pressure acts here on the liquid
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace qs {
+
+enum class ShapeFunctionKind { Linear, Gimp };
+enum class PermeabilityMode { Constant, KozenyCarman, KozenyCarmanScaled };
+enum class ConstitutiveModel { LinearElastic, MohrCoulomb };
+enum class InitialStress { K0, Zero };
+enum class GateMode { Pressure, Flux, Closed };
+enum class ReservoirKind { ConstantHead, Lumped, OpenFoam };
+
+struct GridConfig {
+    int dimension = 1;                 ///< 1, 2 or 3 (only 1 is verified)
+    double cellSize = 0.0;             ///< m, edge of the square/cubic cells
+    double width = 0.0;                ///< m, horizontal extent in 2D/3D (ignored in 1D)
+    double crossSectionArea = 0.0;     ///< m2, column cross-section (1D: the area of every cell;
+                                       ///<     2D: area/width is the out-of-plane thickness)
+    ShapeFunctionKind shapeFunctions = ShapeFunctionKind::Linear;
+};
+
+struct ColumnConfig {
+    double chamberHeight = 0.0;        ///< m, free-water chamber below the filter (>= 1 cell)
+    double waterLevel = 0.0;           ///< m, initial free surface elevation (>= sand top)
+    std::optional<double> overflowLevel;  ///< m, outflow level (>= waterLevel); none: no outflow
+    double top = 0.0;                  ///< m, top of the grid (> overflow and water levels)
+};
+
+struct PermeabilityConfig {
+    PermeabilityMode mode = PermeabilityMode::Constant;
+    double value = 0.0;                ///< m2, kappa (Constant) or kappa0 at n0 (KozenyCarmanScaled)
+    double grainSize = 0.0;            ///< m, D in kappa = D^2 n^3 / (A (1-n)^2) (KozenyCarman)
+};
+
+struct MaterialConfig {
+    std::string name;                  ///< the key under [materials]
+    ConstitutiveModel model = ConstitutiveModel::LinearElastic;
+    double grainDensity = 2650.0;      ///< kg/m3, rho_s
+    double porosity = 0.38;            ///< -, n0 in (0,1)
+    double maxPorosity = 0.41;         ///< -, n_max in (n0, 1): liquid-state switch
+    double minPorosity = 0.32;         ///< -, n_min in (0, n0]: sizes injected liquid points
+    double youngsModulus = 1e6;        ///< Pa
+    double poissonRatio = 0.3;         ///< -, in [0, 0.5)
+    double frictionAngle = 30.0;       ///< degrees (MohrCoulomb)
+    double dilatancyAngle = 0.0;       ///< degrees (MohrCoulomb)
+    double k0 = 0.5;                   ///< -, lateral earth-pressure coefficient at rest
+    PermeabilityConfig permeability;
+    bool ergun = true;                 ///< Forchheimer (Ergun) term on
+    double ergunA = 150.0;             ///< -, Ergun/Kozeny-Carman A
+    double ergunB = 1.75;              ///< -, Ergun B
+};
+
+struct LayerConfig {
+    std::string material;              ///< a key of [materials]
+    double thickness = 0.0;            ///< m
+};
+
+struct LiquidConfig {
+    double density = 998.2;            ///< kg/m3, rho_L
+    double bulkModulus = 2.128e7;      ///< Pa, K_L
+    double viscosity = 8.91e-4;        ///< Pa s, mu
+    double cavitationPressure = 0.0;   ///< Pa (gauge), lowest pore pressure the liquid takes
+    bool freeSurfaceZeroPressure = false;  ///< set p = 0 on free-surface liquid points
+    double freeSurfaceFilling = 0.9;   ///< -, filling ratio below which a top cell is free surface
+};
+
+struct PointsConfig {
+    int solidPerCell = 2;              ///< solid points per cell and direction
+    int liquidPerCell = 2;             ///< liquid points per sand cell and direction
+};
+
+struct InitialConfig {
+    InitialStress stress = InitialStress::K0;
+    bool rigidSkeleton = false;        ///< solid held everywhere (seepage through a fixed bed)
+    bool undrainedSurcharge = false;   ///< start from the undrained state under the surcharge
+    double gravityStageDuration = 0.0; ///< s, quasi-static stage before t = 0 (0: none)
+    double gravityStageDamping = 0.05; ///< -, local damping alpha in that stage
+};
+
+struct LoadConfig {
+    double surcharge = 0.0;            ///< Pa, compressive load on the sand top (solid phase)
+    double surchargeRampTime = 0.0;    ///< s, linear ramp of the surcharge from t = 0
+};
+
+struct GateConfig {
+    GateMode mode = GateMode::Pressure;
+    double flux = 0.0;                 ///< m/s, liquid velocity at the gate (Flux mode)
+    double fluxRampTime = 0.0;         ///< s, linear ramp of that velocity from t = 0
+};
+
+struct ReservoirConfig {
+    ReservoirKind kind = ReservoirKind::ConstantHead;
+    double head = 0.0;                 ///< m, elevation of the reservoir surface above the gate
+    double headRate = 0.0;             ///< m/s, linear change of the head (ConstantHead)
+    double area = 0.0;                 ///< m2, reservoir plan area (Lumped)
+    double tubeDiameter = 0.0;         ///< m, U-tube inner diameter (Lumped; 0: no tube)
+    double tubeLength = 0.0;           ///< m, U-tube length (Lumped)
+    double minorLoss = 0.0;            ///< -, sum of minor-loss coefficients (Lumped)
+    std::string openfoamCase;          ///< path of the OpenFOAM case directory (OpenFoam)
+    std::string gatePatch = "gate";    ///< OpenFOAM patch coupled to the gate
+    std::string reservoirPatch = "reservoir";  ///< OpenFOAM patch carrying the reservoir level
+};
+
+struct TimeConfig {
+    double end = 1.0;                  ///< s, simulated time
+    double courant = 0.4;              ///< -, dt = courant * h / c_fast, in (0, 0.5]
+    std::optional<double> dt;          ///< s, fixed step (must not exceed the stable one)
+    double outputInterval = 0.01;      ///< s
+    double checkpointInterval = 0.0;   ///< s of simulated time (0: only at the end)
+    int sortInterval = 1;              ///< steps between re-sorting points by cell
+};
+
+struct MonitorConfig {
+    std::string name;
+    double elevation = 0.0;            ///< m, section where the filter velocity is measured
+};
+
+struct OutputConfig {
+    std::string directory = "output";  ///< relative to the case directory
+    bool fields = true;                ///< write fields.h5 + fields.xdmf
+    double progressInterval = 2.0;     ///< s of wall time between progress lines
+};
+
+struct CaseConfig {
+    std::string caseDirectory;         ///< where case.toml was read from
+    std::string title;
+    GridConfig grid;
+    ColumnConfig column;
+    std::vector<MaterialConfig> materials;
+    std::vector<LayerConfig> layers;   ///< bottom to top, starting at the filter
+    LiquidConfig liquid;
+    PointsConfig points;
+    double gravity = 9.81;             ///< m/s2
+    InitialConfig initial;
+    LoadConfig loads;
+    GateConfig gate;
+    ReservoirConfig reservoir;
+    TimeConfig time;
+    std::vector<MonitorConfig> monitors;
+    OutputConfig output;
+
+    const MaterialConfig& material(const std::string& name) const;
+    double sandTop() const;            ///< m, filter + sum of layer thicknesses
+    double filterLevel() const { return column.chamberHeight; }
+};
+
+}  // namespace qs

@@ -1,0 +1,882 @@
+#include "io/CaseLoader.hpp"
+
+#include <toml++/toml.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <limits>
+#include <optional>
+#include <sstream>
+#include <string_view>
+#include <utility>
+#include <vector>
+
+#include "core/Error.hpp"
+
+namespace qs {
+namespace {
+
+// ------------------------------------------------------------------------------------------------
+// The keys each table accepts. This is the one list the unknown-key check reads; the order is the
+// order of docs/case-format.md. A reader asking for a key not listed here trips a debug assert.
+// ------------------------------------------------------------------------------------------------
+
+constexpr const char* kRootKeys[] = {"title",   "grid",      "column", "materials", "layers",
+                                     "liquid",  "points",    "gravity", "initial",  "loads",
+                                     "gate",    "reservoir", "time",    "monitors", "output"};
+constexpr const char* kGridKeys[] = {"dimension", "cell_size", "width", "cross_section_area",
+                                     "shape_functions"};
+constexpr const char* kColumnKeys[] = {"chamber_height", "water_level", "overflow_level", "top"};
+constexpr const char* kMaterialKeys[] = {"model",           "grain_density",  "porosity",
+                                         "max_porosity",    "min_porosity",   "youngs_modulus",
+                                         "poisson_ratio",   "friction_angle", "dilatancy_angle",
+                                         "k0",              "ergun",          "ergun_a",
+                                         "ergun_b",         "permeability"};
+constexpr const char* kPermeabilityKeys[] = {"mode", "value", "grain_size"};
+constexpr const char* kLayerKeys[] = {"material", "thickness"};
+constexpr const char* kLiquidKeys[] = {"density",             "bulk_modulus",
+                                       "viscosity",           "cavitation_pressure",
+                                       "free_surface_zero_pressure", "free_surface_filling"};
+constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
+constexpr const char* kInitialKeys[] = {"stress", "rigid_skeleton", "undrained_surcharge",
+                                        "gravity_stage_duration", "gravity_stage_damping"};
+constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
+constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
+constexpr const char* kReservoirKeys[] = {"model",        "head",          "head_rate",
+                                          "area",         "tube_diameter", "tube_length",
+                                          "minor_loss",   "openfoam_case", "gate_patch",
+                                          "reservoir_patch"};
+constexpr const char* kTimeKeys[] = {"end",                 "courant",      "dt", "output_interval",
+                                     "checkpoint_interval", "sort_interval"};
+constexpr const char* kMonitorKeys[] = {"name", "elevation"};
+constexpr const char* kOutputKeys[] = {"directory", "fields", "progress_interval"};
+
+/// The accepted keys of one table; `title` is how messages name the table.
+struct TableKeys {
+    const char* title;
+    const char* const* first;
+    const char* const* last;
+    bool contains(std::string_view key) const {
+        return std::any_of(first, last, [&](const char* k) { return key == k; });
+    }
+};
+
+template <std::size_t N>
+constexpr TableKeys tableKeys(const char* title, const char* const (&keys)[N]) {
+    return {title, keys, keys + N};
+}
+
+const TableKeys kRoot = tableKeys("the top level", kRootKeys);
+const TableKeys kGrid = tableKeys("[grid]", kGridKeys);
+const TableKeys kColumn = tableKeys("[column]", kColumnKeys);
+const TableKeys kMaterial = tableKeys("[materials.NAME]", kMaterialKeys);
+const TableKeys kPermeability = tableKeys("[materials.NAME.permeability]", kPermeabilityKeys);
+const TableKeys kLayer = tableKeys("[[layers]]", kLayerKeys);
+const TableKeys kLiquid = tableKeys("[liquid]", kLiquidKeys);
+const TableKeys kPoints = tableKeys("[points]", kPointsKeys);
+const TableKeys kInitial = tableKeys("[initial]", kInitialKeys);
+const TableKeys kLoads = tableKeys("[loads]", kLoadsKeys);
+const TableKeys kGate = tableKeys("[gate]", kGateKeys);
+const TableKeys kReservoir = tableKeys("[reservoir]", kReservoirKeys);
+const TableKeys kTime = tableKeys("[time]", kTimeKeys);
+const TableKeys kMonitor = tableKeys("[[monitors]]", kMonitorKeys);
+const TableKeys kOutput = tableKeys("[output]", kOutputKeys);
+
+const TableKeys* const kAllTables[] = {&kRoot,    &kGrid,  &kColumn,  &kMaterial, &kPermeability,
+                                       &kLayer,   &kLiquid, &kPoints, &kInitial,  &kLoads,
+                                       &kGate,    &kReservoir, &kTime, &kMonitor, &kOutput};
+
+/// Largest intrinsic permeability accepted (m2). Clean gravel is ~1e-7 m2; larger values are
+/// almost always a hydraulic conductivity in m/s typed where kappa in m2 belongs.
+constexpr double kMaxPermeability = 1e-6;
+/// Smallest viscosity accepted (Pa s); smaller values are a kPa s value (Anura3D's units).
+constexpr double kMinViscosity = 1e-6;
+/// Relative tolerance of the "whole number of cells" and level comparisons.
+constexpr double kGeometryTolerance = 1e-9;
+
+// ------------------------------------------------------------------------------------------------
+// Small text helpers
+// ------------------------------------------------------------------------------------------------
+
+std::string number(double v, int digits = 10) {
+    std::ostringstream s;
+    s.precision(digits);
+    s << v;
+    return s.str();
+}
+
+std::string inQuotes(std::string_view text) { return "\"" + std::string(text) + "\""; }
+
+std::string lower(std::string_view text) {
+    std::string out(text);
+    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    return out;
+}
+
+/// Optimal-string-alignment distance (Levenshtein plus adjacent transpositions), case-insensitive.
+std::size_t editDistance(std::string_view a0, std::string_view b0) {
+    const std::string a = lower(a0), b = lower(b0);
+    const std::size_t n = a.size(), m = b.size();
+    std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
+    for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
+    for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
+    for (std::size_t i = 1; i <= n; ++i) {
+        for (std::size_t j = 1; j <= m; ++j) {
+            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
+            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
+            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
+                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
+        }
+    }
+    return d[n][m];
+}
+
+/// The candidate nearest to `word`, if it is near enough to be a plausible typo.
+std::optional<std::string> nearest(std::string_view word, const std::vector<std::string>& candidates) {
+    std::optional<std::string> best;
+    std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
+    for (const std::string& c : candidates) {
+        const std::size_t d = editDistance(word, c);
+        if (d < bestDistance) {
+            bestDistance = d;
+            best = c;
+        }
+    }
+    const std::size_t limit = std::min<std::size_t>(3, std::max<std::size_t>(1, word.size() / 3));
+    if (best && bestDistance <= limit) return best;
+    return std::nullopt;
+}
+
+std::string joinQuoted(const std::vector<std::string>& items) {
+    std::string out;
+    for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + inQuotes(items[i]);
+    return out;
+}
+
+/// "a string \"abc\"", "an integer 5", ...: how a value the user wrote is named in messages.
+std::string describe(const toml::node& node) {
+    switch (node.type()) {
+    case toml::node_type::string: return "a string " + inQuotes(node.as_string()->get());
+    case toml::node_type::integer: return "an integer " + std::to_string(node.as_integer()->get());
+    case toml::node_type::floating_point:
+        return "a float " + number(node.as_floating_point()->get());
+    case toml::node_type::boolean:
+        return std::string("a boolean ") + (node.as_boolean()->get() ? "true" : "false");
+    case toml::node_type::table: return "a table";
+    case toml::node_type::array: return "an array";
+    default: return "a date/time value";
+    }
+}
+
+int lineOfNode(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
+
+/// An allowed interval of a number, with its unit, for checking and for the message.
+struct Range {
+    double lo = -std::numeric_limits<double>::infinity();
+    double hi = std::numeric_limits<double>::infinity();
+    bool loOpen = false;
+    bool hiOpen = false;
+    std::string unit;  ///< "m", "Pa s", ... or empty for dimensionless
+
+    bool contains(double v) const {
+        return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi);
+    }
+    std::string describe() const {
+        const bool hasLo = std::isfinite(lo), hasHi = std::isfinite(hi);
+        std::string text;
+        if (hasLo && hasHi)
+            text = std::string("in ") + (loOpen ? "(" : "[") + number(lo) + ", " + number(hi) +
+                   (hiOpen ? ")" : "]");
+        else if (hasLo) text = (loOpen ? "> " : ">= ") + number(lo);
+        else if (hasHi) text = (hiOpen ? "< " : "<= ") + number(hi);
+        else text = "any finite number";
+        return text + (unit.empty() ? "" : " " + unit);
+    }
+};
+
+Range positive(std::string unit) { return {0.0, std::numeric_limits<double>::infinity(), true, false, std::move(unit)}; }
+Range nonNegative(std::string unit) { return {0.0, std::numeric_limits<double>::infinity(), false, false, std::move(unit)}; }
+Range anyValue(std::string unit) { return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), false, false, std::move(unit)}; }
+Range between(double lo, bool loOpen, double hi, bool hiOpen, std::string unit = "") {
+    return {lo, hi, loOpen, hiOpen, std::move(unit)};
+}
+
+// ------------------------------------------------------------------------------------------------
+// Section: one TOML table being read, with its dotted path, for typed reads and messages.
+// ------------------------------------------------------------------------------------------------
+
+class Section {
+public:
+    /// `table` may be null (an optional table that is absent): every read then gives its default
+    /// and a required key is reported missing at `fallbackLine`. Checks for unknown keys at once.
+    Section(const std::string& file, const toml::table* table, std::string path, const TableKeys& keys,
+            int fallbackLine)
+        : file_(file), table_(table), path_(std::move(path)), keys_(keys), line_(fallbackLine) {
+        if (table_ && lineOfNode(*table_) > 0) line_ = lineOfNode(*table_);
+        if (table_) checkKeys();
+    }
+
+    const std::string& path() const { return path_; }
+    int line() const { return line_; }
+    bool present() const { return table_ != nullptr; }
+    const toml::table* table() const { return table_; }
+
+    std::string keyPath(std::string_view key) const {
+        return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
+    }
+    const toml::node* find(std::string_view key) const {
+        QS_ASSERT(keys_.contains(key));
+        return table_ ? table_->get(key) : nullptr;
+    }
+    bool has(std::string_view key) const { return find(key) != nullptr; }
+    int lineOf(std::string_view key) const {
+        const toml::node* node = find(key);
+        return node && lineOfNode(*node) > 0 ? lineOfNode(*node) : line_;
+    }
+
+    /// Reports a problem with `key` (at its line if given, else at the table's line).
+    [[noreturn]] void fail(std::string_view key, const std::string& what) const {
+        throw InputError(file_, lineOf(key), keyPath(key), what);
+    }
+    /// Reports a problem with the table itself.
+    [[noreturn]] void failTable(const std::string& what) const {
+        throw InputError(file_, line_, path_, what);
+    }
+    [[noreturn]] void missing(std::string_view key, const std::string& expected) const {
+        fail(key, "missing required key '" + std::string(key) + "' in " + tableName() +
+                      " (expected " + expected + ")");
+    }
+    /// A key that is valid in this table but has no meaning with the choices made elsewhere.
+    void forbid(std::string_view key, const std::string& why) const {
+        if (has(key)) fail(key, "'" + std::string(key) + "' has no effect here: " + why + ". Remove it");
+    }
+
+    std::optional<double> optionalNumber(std::string_view key, const Range& range,
+                                         const std::string& hint = "") const {
+        const toml::node* node = find(key);
+        if (!node) return std::nullopt;
+        double v = 0.0;
+        if (const auto* i = node->as_integer()) v = static_cast<double>(i->get());
+        else if (const auto* f = node->as_floating_point()) v = f->get();
+        else {
+            std::string what = "expected a number (" + range.describe() + "), got " + describe(*node);
+            if (const auto* s = node->as_string()) {
+                std::istringstream probe(s->get());
+                double x;
+                if (probe >> x && probe.eof()) what += "; write numbers without quotes";
+            }
+            fail(key, what);
+        }
+        if (!std::isfinite(v)) fail(key, "expected a finite number (" + range.describe() + "), got " + number(v));
+        if (!range.contains(v))
+            fail(key, "value " + number(v) + (range.unit.empty() ? "" : " " + range.unit) +
+                          " is out of range: expected a value " + range.describe() +
+                          (hint.empty() ? "" : " (" + hint + ")"));
+        return v;
+    }
+    double optionalNumber(std::string_view key, double fallback, const Range& range,
+                          const std::string& hint = "") const {
+        return optionalNumber(key, range, hint).value_or(fallback);
+    }
+    double requiredNumber(std::string_view key, const Range& range, const std::string& hint = "") const {
+        if (!has(key)) missing(key, "a number " + range.describe() + (hint.empty() ? "" : ", " + hint));
+        return *optionalNumber(key, range, hint);
+    }
+
+    int integer(std::string_view key, int fallback, const Range& range) const {
+        const toml::node* node = find(key);
+        if (!node) return fallback;
+        const auto* i = node->as_integer();
+        if (!i) fail(key, "expected an integer (" + range.describe() + "), got " + describe(*node));
+        const auto v = i->get();
+        if (!range.contains(static_cast<double>(v)) || v > std::numeric_limits<int>::max() ||
+            v < std::numeric_limits<int>::min())
+            fail(key, "value " + std::to_string(v) + " is out of range: expected an integer " +
+                          range.describe() +
+                          (std::isfinite(range.hi) ? "" : " and <= " + std::to_string(std::numeric_limits<int>::max())));
+        return static_cast<int>(v);
+    }
+
+    bool boolean(std::string_view key, bool fallback) const {
+        const toml::node* node = find(key);
+        if (!node) return fallback;
+        const auto* b = node->as_boolean();
+        if (!b) fail(key, "expected a boolean (true or false, without quotes), got " + describe(*node));
+        return b->get();
+    }
+
+    std::optional<std::string> optionalString(std::string_view key, bool allowEmpty = false) const {
+        const toml::node* node = find(key);
+        if (!node) return std::nullopt;
+        const auto* s = node->as_string();
+        if (!s) fail(key, "expected a string (in quotes), got " + describe(*node));
+        if (!allowEmpty && s->get().empty()) fail(key, "expected a non-empty string, got \"\"");
+        return s->get();
+    }
+    std::string string(std::string_view key, const std::string& fallback, bool allowEmpty = false) const {
+        return optionalString(key, allowEmpty).value_or(fallback);
+    }
+    std::string requiredString(std::string_view key, const std::string& expected) const {
+        if (!has(key)) missing(key, expected);
+        return *optionalString(key);
+    }
+
+    /// A string naming one of `options`; unknown strings list the allowed ones.
+    template <class E>
+    E choice(std::string_view key, E fallback,
+             const std::vector<std::pair<std::string, E>>& options) const {
+        if (!has(key)) return fallback;
+        return requiredChoice(key, options);
+    }
+    template <class E>
+    E requiredChoice(std::string_view key, const std::vector<std::pair<std::string, E>>& options) const {
+        std::vector<std::string> names;
+        for (const auto& o : options) names.push_back(o.first);
+        if (!has(key)) missing(key, "one of " + joinQuoted(names));
+        const toml::node* node = find(key);
+        const auto* s = node->as_string();
+        if (!s) fail(key, "expected one of " + joinQuoted(names) + ", got " + describe(*node));
+        for (const auto& o : options)
+            if (s->get() == o.first) return o.second;
+        std::string what = "unknown value " + inQuotes(s->get()) + "; allowed: " + joinQuoted(names);
+        if (auto guess = nearest(s->get(), names)) what += ". Did you mean " + inQuotes(*guess) + "?";
+        fail(key, what);
+    }
+
+    /// The sub-table under `key` (null table if absent and not required).
+    Section subsection(std::string_view key, const TableKeys& keys, bool required) const {
+        const toml::node* node = find(key);
+        if (!node) {
+            if (required) fail(key, "missing required table [" + keyPath(key) + "]");
+            return Section(file_, nullptr, keyPath(key), keys, line_);
+        }
+        const toml::table* t = node->as_table();
+        if (!t)
+            fail(key, "expected a table [" + keyPath(key) + "], got " + describe(*node));
+        return Section(file_, t, keyPath(key), keys, line_);
+    }
+
+    /// The array of tables under `key` ([[key]] entries); null if absent and not required.
+    const toml::array* arrayOfTables(std::string_view key, bool required) const {
+        const toml::node* node = find(key);
+        if (!node) {
+            if (required)
+                fail(key, "missing required [[" + std::string(key) + "]] entries (at least one)");
+            return nullptr;
+        }
+        const toml::array* a = node->as_array();
+        if (!a)
+            fail(key, "expected an array of tables, one [[" + std::string(key) + "]] header per entry, got " +
+                          describe(*node));
+        for (std::size_t i = 0; i < a->size(); ++i) {
+            const toml::node& item = *a->get(i);
+            if (!item.is_table()) {
+                const int line = lineOfNode(item) > 0 ? lineOfNode(item) : lineOf(key);
+                throw InputError(file_, line, keyPath(key) + "[" + std::to_string(i) + "]",
+                                 "expected a table (write each entry as a [[" + std::string(key) +
+                                     "]] header followed by its keys), got " + describe(item));
+            }
+        }
+        if (required && a->empty()) fail(key, "expected at least one [[" + std::string(key) + "]] entry, got none");
+        return a;
+    }
+
+    std::string tableName() const { return path_.empty() ? "the top level" : "[" + path_ + "]"; }
+
+private:
+    void checkKeys() const {
+        for (const auto& [k, node] : *table_) {
+            const std::string_view key = k.str();
+            if (keys_.contains(key)) continue;
+            std::vector<std::string> candidates(keys_.first, keys_.last);
+            std::string what = "unknown key '" + std::string(key) + "' in " + tableName() + ".";
+            if (auto guess = nearest(key, candidates)) {
+                what = "unknown key '" + std::string(key) + "'. Did you mean '" + *guess + "'?";
+            } else {
+                std::string elsewhere;
+                for (const TableKeys* t : kAllTables)
+                    if (t != &keys_ && t->contains(key)) {
+                        elsewhere = t->title;
+                        break;
+                    }
+                if (!elsewhere.empty())
+                    what += " '" + std::string(key) + "' belongs in " + elsewhere +
+                            (elsewhere == "the top level"
+                                 ? " (before the first [table] header: a key after a header belongs to that table)"
+                                 : "") + ".";
+                what += " Allowed keys: " + joinQuoted(candidates) + ".";
+            }
+            const int line = lineOfNode(node) > 0 ? lineOfNode(node) : line_;
+            throw InputError(file_, line, keyPath(key), what);
+        }
+    }
+
+    const std::string& file_;
+    const toml::table* table_;
+    std::string path_;
+    const TableKeys& keys_;
+    int line_;
+};
+
+// ------------------------------------------------------------------------------------------------
+// The strings each choice accepts (docs/case-format.md lists the same).
+// ------------------------------------------------------------------------------------------------
+
+template <class E>
+using Options = std::vector<std::pair<std::string, E>>;
+
+const Options<ShapeFunctionKind> kShapeFunctionOptions = {{"linear", ShapeFunctionKind::Linear},
+                                                          {"gimp", ShapeFunctionKind::Gimp}};
+const Options<ConstitutiveModel> kModelOptions = {{"linear_elastic", ConstitutiveModel::LinearElastic},
+                                                  {"mohr_coulomb", ConstitutiveModel::MohrCoulomb}};
+const Options<PermeabilityMode> kPermeabilityOptions = {
+    {"constant", PermeabilityMode::Constant},
+    {"kozeny_carman", PermeabilityMode::KozenyCarman},
+    {"kozeny_carman_scaled", PermeabilityMode::KozenyCarmanScaled}};
+const Options<InitialStress> kStressOptions = {{"k0", InitialStress::K0}, {"zero", InitialStress::Zero}};
+const Options<GateMode> kGateOptions = {
+    {"pressure", GateMode::Pressure}, {"flux", GateMode::Flux}, {"closed", GateMode::Closed}};
+const Options<ReservoirKind> kReservoirOptions = {{"constant_head", ReservoirKind::ConstantHead},
+                                                  {"lumped", ReservoirKind::Lumped},
+                                                  {"openfoam", ReservoirKind::OpenFoam}};
+
+template <class E>
+std::string nameOf(const Options<E>& options, E value) {
+    for (const auto& o : options)
+        if (o.second == value) return inQuotes(o.first);
+    return "?";
+}
+
+/// Throws unless `length` is a whole number (>= 1) of cells of size h (relative tolerance 1e-9).
+void requireWholeCells(const Section& s, std::string_view key, double length, double h) {
+    const double cells = length / h;
+    const double n = std::round(cells);
+    if (n >= 1.0 && std::abs(cells - n) <= kGeometryTolerance * cells) return;
+    const double below = std::floor(cells) * h, above = std::ceil(cells) * h;
+    s.fail(key, number(length) + " m is not a whole number of cells: with grid.cell_size = " +
+                    number(h) + " m it spans " + number(cells) +
+                    " cells; use a multiple of the cell size, e.g. " +
+                    (below > 0.0 ? number(below) + " m or " : "") + number(above) + " m");
+}
+
+/// True if a >= b up to the relative geometry tolerance (levels are sums of thicknesses).
+bool atLeast(double a, double b) {
+    return a >= b - kGeometryTolerance * std::max({1e-300, std::abs(a), std::abs(b)});
+}
+/// True if a > b by more than the relative geometry tolerance.
+bool above(double a, double b) {
+    return a > b + kGeometryTolerance * std::max({1e-300, std::abs(a), std::abs(b)});
+}
+
+// ------------------------------------------------------------------------------------------------
+// Loader: one function per section, in the order of docs/case-format.md.
+// ------------------------------------------------------------------------------------------------
+
+class Loader {
+public:
+    Loader(std::string file, std::string caseDirectory)
+        : file_(std::move(file)), caseDirectory_(std::move(caseDirectory)) {}
+
+    CaseConfig load(const toml::table& rootTable) {
+        const Section root(file_, &rootTable, "", kRoot, 1);
+        c_.caseDirectory = caseDirectory_;
+        c_.title = root.string("title", "", /*allowEmpty=*/true);
+        c_.gravity = root.optionalNumber("gravity", 9.81, nonNegative("m/s2"));
+        readGrid(root);
+        readLiquid(root);  // before the materials: their permeability check quotes mu and rho_L
+        readMaterials(root);
+        readLayers(root);
+        readColumn(root);  // after the layers: the water level defaults to the sand top
+        readPoints(root);
+        readLoads(root);
+        readInitial(root);  // after the loads: undrained_surcharge needs a surcharge
+        readGate(root);
+        readReservoir(root);  // after the gate: the reservoir matters only for a pressure gate
+        readTime(root);
+        readMonitors(root);
+        readOutput(root);
+        return c_;
+    }
+
+private:
+    void readGrid(const Section& root) {
+        const Section s = root.subsection("grid", kGrid, true);
+        GridConfig& g = c_.grid;
+        g.dimension = s.integer("dimension", 1, between(1, false, 3, false));
+        g.cellSize = s.requiredNumber("cell_size", positive("m"), "edge of a grid cell");
+        if (g.dimension >= 2) {
+            g.width = s.requiredNumber("width", positive("m"),
+                                       "horizontal extent of the grid, required in 2D and 3D");
+            requireWholeCells(s, "width", g.width, g.cellSize);
+        } else {
+            g.width = s.optionalNumber("width", 0.0, positive("m"), "ignored in 1D");
+        }
+        g.crossSectionArea = s.requiredNumber("cross_section_area", positive("m2"),
+                                              "cross-section of the column");
+        g.shapeFunctions = s.choice("shape_functions", ShapeFunctionKind::Linear, kShapeFunctionOptions);
+    }
+
+    void readLiquid(const Section& root) {
+        const Section s = root.subsection("liquid", kLiquid, false);
+        LiquidConfig& l = c_.liquid;
+        l.density = s.optionalNumber("density", 998.2, positive("kg/m3"));
+        l.bulkModulus = s.optionalNumber("bulk_modulus", 2.128e7, positive("Pa"));
+        l.viscosity = s.optionalNumber("viscosity", 8.91e-4, positive("Pa s"));
+        if (l.viscosity < kMinViscosity)
+            s.fail("viscosity",
+                   "value " + number(l.viscosity) + " Pa s is implausibly small (expected >= " +
+                       number(kMinViscosity) + " Pa s; water at 20 C: 1.0e-3 Pa s). The unit is Pa s, "
+                       "not kPa s as in Anura3D tables: 8.91e-7 kPa s = 8.91e-4 Pa s");
+        l.cavitationPressure = s.optionalNumber(
+            "cavitation_pressure", 0.0,
+            between(-std::numeric_limits<double>::infinity(), false, 0.0, false, "Pa"),
+            "a gauge pressure: 0 or a suction");
+        l.freeSurfaceZeroPressure = s.boolean("free_surface_zero_pressure", false);
+        l.freeSurfaceFilling = s.optionalNumber("free_surface_filling", 0.9, between(0, true, 1, false));
+    }
+
+    void readMaterials(const Section& root) {
+        const toml::node* node = root.find("materials");
+        if (!node)
+            root.fail("materials", "missing required table [materials]: define at least one "
+                                   "material as a [materials.NAME] table");
+        const toml::table* table = node->as_table();
+        if (!table)
+            root.fail("materials", "expected a table of materials, one [materials.NAME] header each, got " +
+                                       describe(*node));
+        if (table->empty())
+            root.fail("materials", "no material defined: add at least one [materials.NAME] table");
+        std::vector<std::pair<std::string, const toml::node*>> entries;
+        for (const auto& [key, value] : *table) entries.emplace_back(std::string(key.str()), &value);
+        std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
+            return lineOfNode(*a.second) < lineOfNode(*b.second);
+        });
+        for (const auto& [name, value] : entries) {
+            const std::string path = "materials." + name;
+            if (!value->is_table())
+                throw InputError(file_, lineOfNode(*value) > 0 ? lineOfNode(*value) : root.lineOf("materials"),
+                                 path,
+                                 "expected a table [" + path + "] describing a material, got " +
+                                     describe(*value) +
+                                     "; material keys go under a [materials.NAME] header");
+            const Section s(file_, value->as_table(), path, kMaterial, root.lineOf("materials"));
+            c_.materials.push_back(readMaterial(s, name));
+        }
+    }
+
+    MaterialConfig readMaterial(const Section& s, const std::string& name) const {
+        MaterialConfig m;
+        m.name = name;
+        m.model = s.choice("model", ConstitutiveModel::LinearElastic, kModelOptions);
+        m.grainDensity = s.optionalNumber("grain_density", 2650.0, positive("kg/m3"));
+        m.porosity = s.requiredNumber("porosity", between(0, true, 1, true),
+                                      "initial porosity n0, a fraction: 0.38, not 38");
+        m.maxPorosity = s.optionalNumber("max_porosity", 0.41, between(0, true, 1, true));
+        if (!(m.maxPorosity > m.porosity)) {
+            const bool given = s.has("max_porosity");
+            s.fail(given ? "max_porosity" : "porosity",
+                   "n0 = " + number(m.porosity) + " >= n_max = " + number(m.maxPorosity) +
+                       (given ? "" : " (the default)") +
+                       ": porosity must be below max_porosity, or the sand starts in the liquid "
+                       "state; lower porosity or set max_porosity in (porosity, 1)");
+        }
+        m.minPorosity = s.optionalNumber("min_porosity", 0.32, between(0, true, 1, true));
+        if (m.minPorosity > m.porosity) {
+            const bool given = s.has("min_porosity");
+            s.fail(given ? "min_porosity" : "porosity",
+                   "n_min = " + number(m.minPorosity) + (given ? "" : " (the default)") + " > n0 = " +
+                       number(m.porosity) +
+                       ": min_porosity must be in (0, porosity]; set min_porosity <= porosity");
+        }
+        m.youngsModulus = s.optionalNumber("youngs_modulus", 1e6, positive("Pa"));
+        m.poissonRatio = s.optionalNumber("poisson_ratio", 0.3, between(0, false, 0.5, true));
+        m.frictionAngle = s.optionalNumber("friction_angle", 30.0, between(0, false, 90, true, "deg"));
+        m.dilatancyAngle = s.optionalNumber("dilatancy_angle", 0.0,
+                                            between(0, false, m.frictionAngle, false, "deg"),
+                                            "at most friction_angle");
+        m.k0 = s.optionalNumber("k0", 0.5, nonNegative(""));
+        m.ergun = s.boolean("ergun", true);
+        m.ergunA = s.optionalNumber("ergun_a", 150.0, positive(""));
+        m.ergunB = s.optionalNumber("ergun_b", 1.75, nonNegative(""));
+        m.permeability = readPermeability(s.subsection("permeability", kPermeability, true));
+        return m;
+    }
+
+    PermeabilityConfig readPermeability(const Section& s) const {
+        PermeabilityConfig p;
+        p.mode = s.requiredChoice("mode", kPermeabilityOptions);
+        if (p.mode == PermeabilityMode::KozenyCarman) {
+            s.forbid("value", "mode = \"kozeny_carman\" computes kappa from grain_size (to scale a "
+                              "given kappa with porosity use mode = \"kozeny_carman_scaled\")");
+            p.grainSize = s.requiredNumber("grain_size", positive("m"),
+                                           "grain size D in m, e.g. D10 = 0.261 mm = 2.61e-4 m");
+            return p;
+        }
+        s.forbid("grain_size", "it is used only with mode = \"kozeny_carman\" (mode is " +
+                                   nameOf(kPermeabilityOptions, p.mode) + ")");
+        p.value = s.requiredNumber("value", positive("m2"), "intrinsic permeability kappa in m2");
+        if (p.value > kMaxPermeability) {
+            const LiquidConfig& l = c_.liquid;
+            const double g = c_.gravity > 0.0 ? c_.gravity : 9.81;
+            const double kappa = p.value * l.viscosity / (l.density * g);
+            s.fail("value",
+                   "value " + number(p.value) + " is far too large for an intrinsic permeability in m2 "
+                   "(expected > 0 and <= " + number(kMaxPermeability) + " m2; clean gravel is about "
+                   "1e-7 m2). It looks like a hydraulic conductivity K in m/s. The intrinsic "
+                   "permeability is kappa = K mu / (rho_L g): here " + number(p.value) + " * " +
+                   number(l.viscosity) + " / (" + number(l.density) + " * " + number(g) + ") = " +
+                   number(kappa, 4) + " m2. Give kappa in m2");
+        }
+        return p;
+    }
+
+    void readLayers(const Section& root) {
+        const toml::array* layers = root.arrayOfTables("layers", true);
+        std::vector<std::string> names;
+        for (const MaterialConfig& m : c_.materials) names.push_back(m.name);
+        for (std::size_t i = 0; i < layers->size(); ++i) {
+            const Section s(file_, layers->get(i)->as_table(), "layers[" + std::to_string(i) + "]",
+                            kLayer, root.lineOf("layers"));
+            LayerConfig layer;
+            layer.material = s.requiredString("material", "the NAME of a [materials.NAME] table");
+            if (std::find(names.begin(), names.end(), layer.material) == names.end()) {
+                std::string what = "no material named " + inQuotes(layer.material) +
+                                   " in [materials]; defined: " + joinQuoted(names);
+                if (auto guess = nearest(layer.material, names)) what += ". Did you mean " + inQuotes(*guess) + "?";
+                s.fail("material", what);
+            }
+            layer.thickness = s.requiredNumber("thickness", positive("m"));
+            requireWholeCells(s, "thickness", layer.thickness, c_.grid.cellSize);
+            c_.layers.push_back(layer);
+        }
+    }
+
+    void readColumn(const Section& root) {
+        const Section s = root.subsection("column", kColumn, true);
+        ColumnConfig& col = c_.column;
+        const double h = c_.grid.cellSize;
+        col.chamberHeight = s.requiredNumber(
+            "chamber_height", positive("m"),
+            "height of the free-water chamber from the gate (z = 0) to the filter");
+        if (!atLeast(col.chamberHeight, h))
+            s.fail("chamber_height", "chamber_height = " + number(col.chamberHeight) +
+                                         " m is less than one cell (grid.cell_size = " + number(h) +
+                                         " m): the chamber needs at least one cell");
+        requireWholeCells(s, "chamber_height", col.chamberHeight, h);
+
+        const double sandTop = c_.sandTop();
+        const std::string sandTopText = "the sand top at " + number(sandTop) +
+                                        " m (chamber_height " + number(col.chamberHeight) +
+                                        " m + layers " + number(sandTop - col.chamberHeight) + " m)";
+        col.waterLevel = s.optionalNumber("water_level", sandTop, anyValue("m"));
+        if (!atLeast(col.waterLevel, sandTop))
+            s.fail("water_level", "water_level = " + number(col.waterLevel) + " m is below " +
+                                      sandTopText +
+                                      "; the bed must start submerged: use water_level >= " +
+                                      number(sandTop) + " m, or omit it (default: the sand top)");
+        col.overflowLevel = s.optionalNumber("overflow_level", anyValue("m"));
+        if (col.overflowLevel && !atLeast(*col.overflowLevel, col.waterLevel))
+            s.fail("overflow_level", "overflow_level = " + number(*col.overflowLevel) +
+                                         " m is below water_level = " + number(col.waterLevel) +
+                                         " m" + (s.has("water_level") ? "" : " (the default: sand top)") +
+                                         "; expected overflow_level >= water_level");
+        col.top = s.requiredNumber("top", positive("m"), "top of the grid, above water and overflow levels");
+        if (!above(col.top, col.waterLevel))
+            s.fail("top", "top = " + number(col.top) + " m is not above water_level = " +
+                              number(col.waterLevel) + " m; the grid must reach above the free surface");
+        if (col.overflowLevel && !above(col.top, *col.overflowLevel))
+            s.fail("top", "top = " + number(col.top) + " m is not above overflow_level = " +
+                              number(*col.overflowLevel) + " m; the grid must reach above the overflow");
+        requireWholeCells(s, "top", col.top, h);
+    }
+
+    void readPoints(const Section& root) {
+        const Section s = root.subsection("points", kPoints, false);
+        c_.points.solidPerCell = s.integer("solid_per_cell", 2, between(1, false, 8, false));
+        c_.points.liquidPerCell = s.integer("liquid_per_cell", 2, between(1, false, 8, false));
+    }
+
+    void readLoads(const Section& root) {
+        const Section s = root.subsection("loads", kLoads, false);
+        c_.loads.surcharge = s.optionalNumber("surcharge", 0.0, nonNegative("Pa"));
+        c_.loads.surchargeRampTime = s.optionalNumber("surcharge_ramp_time", 0.0, nonNegative("s"));
+    }
+
+    void readInitial(const Section& root) {
+        const Section s = root.subsection("initial", kInitial, false);
+        InitialConfig& i = c_.initial;
+        i.stress = s.choice("stress", InitialStress::K0, kStressOptions);
+        i.rigidSkeleton = s.boolean("rigid_skeleton", false);
+        i.undrainedSurcharge = s.boolean("undrained_surcharge", false);
+        if (i.undrainedSurcharge && !(c_.loads.surcharge > 0.0))
+            s.fail("undrained_surcharge", "undrained_surcharge = true needs a surcharge, but "
+                                          "loads.surcharge is " + number(c_.loads.surcharge) +
+                                          " Pa; set loads.surcharge > 0 or remove this key");
+        i.gravityStageDuration = s.optionalNumber("gravity_stage_duration", 0.0, nonNegative("s"));
+        i.gravityStageDamping = s.optionalNumber("gravity_stage_damping", 0.05, between(0, false, 1, true));
+    }
+
+    void readGate(const Section& root) {
+        const Section s = root.subsection("gate", kGate, false);
+        GateConfig& g = c_.gate;
+        g.mode = s.choice("mode", GateMode::Pressure, kGateOptions);
+        if (g.mode == GateMode::Flux) {
+            g.flux = s.requiredNumber("flux", anyValue("m/s"),
+                                      "liquid velocity at the gate, positive upward into the column");
+            g.fluxRampTime = s.optionalNumber("flux_ramp_time", 0.0, nonNegative("s"));
+        } else {
+            const std::string why = "it is used only with mode = \"flux\" (mode is " +
+                                    nameOf(kGateOptions, g.mode) + ")";
+            s.forbid("flux", why);
+            s.forbid("flux_ramp_time", why);
+        }
+    }
+
+    void readReservoir(const Section& root) {
+        const bool pressureGate = c_.gate.mode == GateMode::Pressure;
+        if (pressureGate && !root.has("reservoir"))
+            root.fail("reservoir", "missing required table [reservoir]: with gate.mode = \"pressure\" "
+                                   "(the default) the reservoir sets the gate pressure; give at "
+                                   "least reservoir.head");
+        const Section s = root.subsection("reservoir", kReservoir, false);
+        ReservoirConfig& r = c_.reservoir;
+        r.kind = s.choice("model", ReservoirKind::ConstantHead, kReservoirOptions);
+        const std::string notHere = "it does not apply to model = " + nameOf(kReservoirOptions, r.kind);
+        const Range head = nonNegative("m");
+        const std::string headHint = "elevation of the reservoir surface above the gate plane z = 0";
+        auto readHead = [&] {
+            // A flux or closed gate does not use the reservoir: its head may then be left out.
+            r.head = pressureGate ? s.requiredNumber("head", head, headHint)
+                                  : s.optionalNumber("head", 0.0, head, headHint);
+        };
+        switch (r.kind) {
+        case ReservoirKind::ConstantHead:
+            for (const char* key : {"area", "tube_diameter", "tube_length", "minor_loss",
+                                    "openfoam_case", "gate_patch", "reservoir_patch"})
+                s.forbid(key, notHere);
+            readHead();
+            r.headRate = s.optionalNumber("head_rate", 0.0, anyValue("m/s"));
+            break;
+        case ReservoirKind::Lumped:
+            for (const char* key : {"head_rate", "openfoam_case", "gate_patch", "reservoir_patch"})
+                s.forbid(key, notHere);
+            readHead();
+            r.area = s.requiredNumber("area", positive("m2"), "plan area of the reservoir");
+            r.tubeDiameter = s.optionalNumber("tube_diameter", 0.0, nonNegative("m"), "0: no tube");
+            if (r.tubeDiameter > 0.0) {
+                r.tubeLength = s.requiredNumber("tube_length", positive("m"),
+                                                "length of the U-tube, required with tube_diameter > 0");
+                r.minorLoss = s.optionalNumber("minor_loss", 0.0, nonNegative(""));
+            } else {
+                s.forbid("tube_length", "there is no tube (tube_diameter = 0; give tube_diameter > 0 for one)");
+                s.forbid("minor_loss", "minor losses act in the tube and there is none "
+                                       "(tube_diameter = 0; give tube_diameter > 0 for one)");
+            }
+            break;
+        case ReservoirKind::OpenFoam: {
+            for (const char* key : {"head", "head_rate", "area", "tube_diameter", "tube_length", "minor_loss"})
+                s.forbid(key, notHere + " (the OpenFOAM case holds the reservoir)");
+            const std::string given = s.requiredString(
+                "openfoam_case", "the path of the OpenFOAM case directory, relative to the case directory");
+            std::filesystem::path path(given);
+            if (path.is_relative()) path = std::filesystem::path(caseDirectory_) / path;
+            path = std::filesystem::absolute(path).lexically_normal();
+            if (!std::filesystem::is_directory(path))
+                s.fail("openfoam_case", "OpenFOAM case directory " + inQuotes(path.string()) +
+                                            " does not exist (" + inQuotes(given) +
+                                            " is read relative to the case directory " +
+                                            inQuotes(caseDirectory_) + ")");
+            r.openfoamCase = path.string();
+            r.gatePatch = s.string("gate_patch", "gate");
+            r.reservoirPatch = s.string("reservoir_patch", "reservoir");
+            break;
+        }
+        }
+    }
+
+    void readTime(const Section& root) {
+        const Section s = root.subsection("time", kTime, true);
+        TimeConfig& t = c_.time;
+        t.end = s.requiredNumber("end", positive("s"), "simulated end time");
+        t.courant = s.optionalNumber("courant", 0.4, between(0, true, 0.5, false));
+        t.dt = s.optionalNumber("dt", positive("s"));
+        t.outputInterval = s.optionalNumber("output_interval", t.end / 100.0, positive("s"));
+        t.checkpointInterval = s.optionalNumber("checkpoint_interval", 0.0, nonNegative("s"), "0: only at the end");
+        t.sortInterval = s.integer("sort_interval", 1,
+                                   between(1, false, std::numeric_limits<double>::infinity(), false));
+    }
+
+    void readMonitors(const Section& root) {
+        const toml::array* monitors = root.arrayOfTables("monitors", false);
+        if (!monitors) return;
+        std::vector<int> lines;
+        for (std::size_t i = 0; i < monitors->size(); ++i) {
+            const Section s(file_, monitors->get(i)->as_table(), "monitors[" + std::to_string(i) + "]",
+                            kMonitor, root.lineOf("monitors"));
+            MonitorConfig m;
+            m.name = s.requiredString("name", "a unique name for the monitor");
+            for (std::size_t j = 0; j < c_.monitors.size(); ++j)
+                if (c_.monitors[j].name == m.name)
+                    s.fail("name", "monitor name " + inQuotes(m.name) + " is already used by monitors[" +
+                                       std::to_string(j) + "] (line " + std::to_string(lines[j]) +
+                                       "); monitor names must be unique");
+            m.elevation = s.requiredNumber("elevation", between(0, false, c_.column.top, false, "m"),
+                                           "within the grid, from the gate (0) to column.top");
+            c_.monitors.push_back(m);
+            lines.push_back(s.line());
+        }
+    }
+
+    void readOutput(const Section& root) {
+        const Section s = root.subsection("output", kOutput, false);
+        c_.output.directory = s.string("directory", "output");
+        c_.output.fields = s.boolean("fields", true);
+        c_.output.progressInterval = s.optionalNumber("progress_interval", 2.0, positive("s"));
+    }
+
+    std::string file_;
+    std::string caseDirectory_;
+    CaseConfig c_;
+};
+
+}  // namespace
+
+CaseConfig parseCase(const std::string& tomlText, const std::string& fileName,
+                     const std::string& caseDirectory) {
+    toml::table root;
+#if TOML_EXCEPTIONS
+    try {
+        root = toml::parse(std::string_view(tomlText), std::string_view(fileName));
+    } catch (const toml::parse_error& e) {
+        throw InputError(fileName, static_cast<int>(e.source().begin.line), "",
+                         "TOML syntax error: " + std::string(e.description()));
+    }
+#else
+    toml::parse_result result = toml::parse(std::string_view(tomlText), std::string_view(fileName));
+    if (!result)
+        throw InputError(fileName, static_cast<int>(result.error().source().begin.line), "",
+                         "TOML syntax error: " + std::string(result.error().description()));
+    root = std::move(result).table();
+#endif
+    return Loader(fileName, caseDirectory).load(root);
+}
+
+CaseConfig loadCase(const std::string& caseDirectory) {
+    const std::filesystem::path file = std::filesystem::path(caseDirectory) / "case.toml";
+    std::ifstream in(file, std::ios::binary);
+    if (!in) {
+        const std::string why = std::filesystem::is_directory(caseDirectory)
+                                    ? "cannot read the case file (a case directory must hold case.toml)"
+                                    : "cannot read the case file: case directory " +
+                                          inQuotes(caseDirectory) + " does not exist";
+        throw InputError(file.string(), 0, "", why);
+    }
+    std::ostringstream text;
+    text << in.rdbuf();
+    return parseCase(text.str(), file.string(), caseDirectory);
+}
+
+}  // namespace qs

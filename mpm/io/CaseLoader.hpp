@@ -1,0 +1,32 @@
+#pragma once
+// CaseLoader: reads a case directory's case.toml into a validated CaseConfig.
+//
+// Usage:
+//   qs::CaseConfig config = qs::loadCase("cases/deltaresColumn");   // reads .../case.toml
+//   // config is complete: every default filled in, every range and cross-check passed.
+//
+// This is the only code in quicksand that sees TOML (toml++). The keys, units, defaults and
+// allowed ranges are listed in docs/case-format.md; the accepted keys of each table are declared
+// once, in CaseLoader.cpp, and drive the unknown-key check ("Did you mean ...").
+//
+// Every problem is reported as qs::InputError naming the file, the line of the offending node
+// (for a missing key, the line of the table that should hold it), the full dotted key
+// (e.g. "materials.sand.porosity", "layers[1].thickness"), the bad value and what is expected.
+// Loading stops at the first problem.
+#include <string>
+
+#include "io/CaseConfig.hpp"
+
+namespace qs {
+
+/// Reads CASE_DIR/case.toml, validates it completely and returns the config. Throws qs::InputError
+/// naming file, line, full dotted key (e.g. "materials.sand.porosity") and expected value.
+/// config.caseDirectory is set to `caseDirectory` as given.
+CaseConfig loadCase(const std::string& caseDirectory);
+
+/// Same, from a TOML string (for tests); `fileName` is used in messages. Relative paths in the
+/// case (reservoir.openfoam_case) are resolved against `caseDirectory`.
+CaseConfig parseCase(const std::string& tomlText, const std::string& fileName,
+                     const std::string& caseDirectory = ".");
+
+}  // namespace qs

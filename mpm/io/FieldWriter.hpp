@@ -1,0 +1,94 @@
+#pragma once
+// FieldWriter: material-point fields over time, in OUTDIR/fields.h5 with OUTDIR/fields.xdmf beside
+// it so that ParaView (or VisIt) opens the whole series as one time-dependent data set.
+//
+// Usage:
+//   FieldWriter writer(outputDirectory, D);          // creates (truncates) both files
+//   for each output time t:
+//     writer.beginStep(t);
+//     writer.writePointSet("solid", n, positions, {{"porosity", phi, 1},
+//                                                  {"effective_stress", sigma, 6}});
+//     writer.writePointSet("liquid", m, ...);
+//     writer.endStep();                              // flushes; fields.xdmf is valid again
+//
+// Layout of fields.h5 (all datasets double, row-major, one row per point):
+//   /                       attribute dimension (int, 1..3)
+//   /step_000000            attribute time (double, s)
+//   /step_000000/solid/positions     [n][3]  m, always XYZ (see "Vertical axis" below)
+//   /step_000000/solid/connectivity  [n]     int32 0..n-1: the explicit Polyvertex topology, as
+//                                            ParaView's Xdmf3 reader reads point ids from it
+//   /step_000000/solid/<field>       [n] scalar, [n][3] vector, [n][6] symmetric tensor,
+//                                    [n][k] anything else (XDMF "Matrix")
+//
+// Vertical axis: the last grid coordinate is vertical (core/Types.hpp). So that ParaView shows
+// an upright column, positions and vectors are padded to 3D with the vertical axis kept in Z:
+//   1D (z) -> (0, 0, z);   2D (x, z) -> (x, 0, z);   3D unchanged.
+// Symmetric tensors are already full 3D (materials work in 3D whatever D is) and are written
+// unchanged in the caller's Voigt order xx, yy, zz, yz, xz, xy (the dataset's attribute
+// "components" says so); zz (index 2) is the vertical normal component.
+//
+// fields.xdmf (XDMF 3): one temporal collection; per step a spatial collection with one
+// Polyvertex grid per non-empty point set. An empty point set still gets its (empty) datasets in
+// fields.h5 but no XDMF grid, because readers reject zero-sized DataItems.
+//
+// Errors: any HDF5 or file failure throws qs::Error naming the file and the operation.
+// Not thread-safe; call from one thread (HDF5 serial is not thread-safe either).
+#include <cstddef>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace qs {
+
+/// How a field's components are meant, when the component count alone cannot say (1D vectors).
+enum class FieldKind {
+    Automatic,        ///< 1 -> Scalar, 6 -> SymmetricTensor, dimension (2, 3) -> Vector, else Matrix
+    Scalar,           ///< 1 component
+    Vector,           ///< `dimension` components, padded to 3 like positions
+    SymmetricTensor,  ///< 6 components, Voigt order xx, yy, zz, yz, xz, xy (3D components)
+};
+
+/// One field of a point set, borrowed for the duration of writePointSet().
+struct PointField {
+    std::string name;    ///< dataset name: letters, digits, '_', '-', '.'
+    const double* data;  ///< data[count * components], row-major per point; integers as double
+    int components;
+    FieldKind kind = FieldKind::Automatic;  ///< set Vector for a 1D vector (1 component)
+};
+
+class FieldWriter {
+public:
+    /// Creates directory if needed, then creates (truncates) directory/fields.h5 and
+    /// directory/fields.xdmf (an empty but valid series). dimension = 1..3.
+    FieldWriter(const std::string& directory, int dimension);
+    /// Finishes an open step (as endStep() would, errors swallowed) and closes the file.
+    ~FieldWriter();
+
+    FieldWriter(const FieldWriter&) = delete;
+    FieldWriter& operator=(const FieldWriter&) = delete;
+
+    /// Starts output time `time` (s). Pre: no step open. Times should increase (not checked:
+    /// ParaView sorts them).
+    void beginStep(double time);
+    /// Writes one point set into the open step. positions: count * dimension doubles (m).
+    /// Pre: a step is open; setName not yet written in this step. Data is copied: the caller's
+    /// arrays may change after the call.
+    void writePointSet(const std::string& setName, std::size_t count, const double* positions,
+                       const std::vector<PointField>& fields);
+    /// Flushes fields.h5 and rewrites fields.xdmf (atomically, via a temporary and rename) so a
+    /// crash after it leaves both files readable. Pre: a step is open.
+    void endStep();
+
+    const std::string& hdf5Path() const { return hdf5Path_; }
+    const std::string& xdmfPath() const { return xdmfPath_; }
+    int stepsWritten() const;
+
+private:
+    struct Impl;
+    std::unique_ptr<Impl> impl_;
+    std::string hdf5Path_;
+    std::string xdmfPath_;
+};
+
+}  // namespace qs

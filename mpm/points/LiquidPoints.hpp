@@ -1,0 +1,39 @@
+#pragma once
+// LiquidPoints<D>: the pore-water material points, as a structure of arrays.
+//
+// A liquid point has a constant liquid mass m_L and stands for a mixture volume V: inside the sand
+// m_L = n rho_L V, in free water m_L = rho_L V. V follows the liquid's own strain,
+// V <- V (1 + d eps_L), which keeps that relation as the point moves between sand and free water.
+// Pore pressure p is gauge, compression positive; it is a cell quantity (one value per cell
+// each step) carried by the points so that it moves with the liquid (physics.md section 2).
+#include <vector>
+
+#include "points/PointSet.hpp"
+
+namespace qs {
+
+enum LiquidFlags : int { kSubmergedLiquid = 0, kFreeSurfaceLiquid = 1 };
+
+template <int D>
+struct LiquidPoints {
+    std::vector<Real> x;          ///< m, position [point][axis]
+    std::vector<Real> v;          ///< m/s, velocity [point][axis]
+    std::vector<Real> mass;       ///< kg, liquid mass (constant)
+    std::vector<Real> volume;     ///< m3, mixture volume V
+    std::vector<Real> pressure;   ///< Pa, pore pressure (gauge, compression positive)
+    std::vector<int> state;       ///< LiquidFlags, set each step
+
+    ShapeCache<D> shape;          ///< per-step scratch
+    std::vector<Real> weight;     ///< m3, integration weight V* (per step, see the solver)
+    std::vector<Real> strainVol;  ///< -, volumetric strain increment of the last step
+    Real halfLength = 0;          ///< m, uGIMP particle half-length
+
+    std::size_t size() const { return mass.size(); }
+
+    template <class F>
+    void forEachField(F&& f) {
+        f(x, D); f(v, D); f(mass, 1); f(volume, 1); f(pressure, 1); f(state, 1);
+    }
+};
+
+}  // namespace qs

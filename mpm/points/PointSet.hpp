@@ -1,0 +1,100 @@
+#pragma once
+// Operations shared by SolidPoints and LiquidPoints, written once over their fields.
+//
+// A point set is a structure of arrays: one contiguous std::vector per field, `components`
+// values per point. Each set lists its persistent fields in forEachField(f), which calls
+// f(vector, components); everything here (resize, reorder, append, remove) goes through it, so a
+// new field is added in one place. Capacity is reserved up front: inside the time loop these
+// operations never allocate as long as the count stays below the reserved capacity.
+#include <algorithm>
+#include <vector>
+
+#include "core/Types.hpp"
+
+namespace qs {
+
+/// Per-point shape-function cache: stencil origin node and per-axis weights (see
+/// grid/ShapeFunctions.hpp). Recomputed every step from the positions.
+template <int D>
+struct ShapeCache {
+    std::vector<Index> cell;    ///< cell holding the point
+    std::vector<Index> start;   ///< flat index of the stencil's first node
+    std::vector<Real> w, dw;    ///< [point][axis][3]
+    void resize(std::size_t n) {
+        cell.resize(n);
+        start.resize(n);
+        w.resize(n * D * 3);
+        dw.resize(n * D * 3);
+    }
+    void reserve(std::size_t n) {
+        cell.reserve(n);
+        start.reserve(n);
+        w.reserve(n * D * 3);
+        dw.reserve(n * D * 3);
+    }
+};
+
+/// Scratch for reordering fields, sized once.
+struct ReorderScratch {
+    std::vector<Real> reals;
+    std::vector<int> ints;
+    std::vector<Index> order;
+};
+
+template <class Set>
+void resizePoints(Set& set, std::size_t n) {
+    set.forEachField([n](auto& field, int components) { field.resize(n * components); });
+}
+
+template <class Set>
+void reservePoints(Set& set, std::size_t n, ReorderScratch& scratch, int maxComponents) {
+    set.forEachField([n](auto& field, int components) { field.reserve(n * components); });
+    scratch.reals.reserve(n * maxComponents);
+    scratch.ints.reserve(n * maxComponents);
+    scratch.order.reserve(n);
+}
+
+namespace detail {
+template <class T>
+std::vector<T>& scratchFor(ReorderScratch& s);
+template <>
+inline std::vector<Real>& scratchFor<Real>(ReorderScratch& s) { return s.reals; }
+template <>
+inline std::vector<int>& scratchFor<int>(ReorderScratch& s) { return s.ints; }
+}  // namespace detail
+
+/// Reorders every field so that new point k is old point order[k].
+template <class Set>
+void reorderPoints(Set& set, const std::vector<Index>& order, ReorderScratch& scratch) {
+    const std::size_t n = order.size();
+    set.forEachField([&](auto& field, int components) {
+        using T = typename std::decay_t<decltype(field)>::value_type;
+        auto& tmp = detail::scratchFor<T>(scratch);
+        tmp.resize(n * components);
+        for (std::size_t k = 0; k < n; ++k)
+            for (int c = 0; c < components; ++c)
+                tmp[k * components + c] = field[order[k] * components + c];
+        field.swap(tmp);
+    });
+}
+
+/// Removes the points whose drop flag is set, keeping the order of the others (so a sorted set
+/// stays sorted). `drop` has one entry per point and is owned by the caller (no allocation here).
+template <class Set>
+std::size_t compactPoints(Set& set, const std::vector<char>& drop) {
+    const std::size_t n = set.size();
+    std::size_t kept = n;
+    set.forEachField([&](auto& field, int components) {
+        std::size_t out = 0;
+        for (std::size_t p = 0; p < n; ++p) {
+            if (drop[p]) continue;
+            for (int c = 0; c < components; ++c) field[out * components + c] = field[p * components + c];
+            ++out;
+        }
+        field.resize(out * components);
+        kept = out;
+    });
+    return n - kept;
+}
+
+}  // namespace qs

@@ -1,0 +1,60 @@
+#pragma once
+// LumpedReservoir: the upstream reservoir and its U-tube as one ODE (physics.md section 3).
+//
+//   A_r dh/dt = -Q                                   (level balance, h above the gate plane)
+//   p_gate = rho g h - rho g R_t Q - K rho/2 (Q/A_t)^2 (static head, Hagen-Poiseuille, minor losses)
+//
+// The gate law hands the solver the slope -dp/dQ so it can treat the tube loss implicitly in the
+// gate node update; lagged, the loss is unstable for realistic tubes. The minor loss is quadratic,
+// so it enters as a secant slope about the last flux, K rho |Q_last| / (2 A_t^2).
+// Hagen-Poiseuille assumes laminar flow: tubeReynolds() reports it and advance() warns once on
+// std::cerr when it exceeds 2000.
+#include "reservoir/ReservoirModel.hpp"
+
+namespace qs {
+
+struct LumpedReservoirParameters {
+    double liquidDensity = 998.2;  ///< kg/m3
+    double gravity = 9.81;         ///< m/s2
+    double viscosity = 8.91e-4;    ///< Pa s
+    double area = 0.0;             ///< m2, reservoir plan area A_r (> 0)
+    double initialHead = 0.0;      ///< m, reservoir level above the gate plane at t = 0
+    double tubeDiameter = 0.0;     ///< m (0: no tube, no losses)
+    double tubeLength = 0.0;       ///< m
+    double minorLoss = 0.0;        ///< -, sum of minor-loss coefficients K (needs a tube)
+};
+
+class LumpedReservoir final : public ReservoirModel {
+public:
+    /// Above this tube Reynolds number the laminar (Hagen-Poiseuille) loss is no longer valid.
+    static constexpr double kLaminarReynoldsLimit = 2000.0;
+
+    explicit LumpedReservoir(const LumpedReservoirParameters& parameters);
+
+    std::string name() const override { return "lumped"; }
+    GateLaw gateLaw(double t) const override;
+    /// h -= Q dt / A_r (the flux of the step, measured after the gate update); remembers Q for
+    /// the minor-loss slope and the Reynolds check.
+    void advance(double t, double dt, double gateFlux) override;
+    double head() const override { return head_; }
+    /// {h, Q_last}
+    std::vector<double> saveState() const override;
+    void restoreState(const std::vector<double>& state) override;
+
+    /// s/m2, Hagen-Poiseuille tube resistance R_t (head per flow rate); 0 without a tube.
+    double tubeResistance() const { return tubeResistance_; }
+    /// Re = 4 rho |Q_last| / (pi mu d) of the flow in the tube; 0 without a tube.
+    double tubeReynolds() const;
+    /// True once advance() has warned that the tube flow left the laminar range.
+    bool reynoldsWarningIssued() const { return reynoldsWarned_; }
+
+private:
+    LumpedReservoirParameters p_;
+    double tubeArea_ = 0.0;        ///< m2, A_t
+    double tubeResistance_ = 0.0;  ///< s/m2
+    double head_ = 0.0;            ///< m
+    double lastFlux_ = 0.0;        ///< m3/s, the gate flux of the last advanced step
+    bool reynoldsWarned_ = false;  ///< not part of the saved state: warn once per run
+};
+
+}  // namespace qs

@@ -1,0 +1,153 @@
+#include "solver/ColumnBuilder.hpp"
+
+#include <cmath>
+
+#include "core/Error.hpp"
+#include "materials/StressTensor.hpp"
+#include "solver/DoublePointSolver.hpp"
+
+namespace qs {
+
+namespace {
+
+/// Calls emit(x, V) for a regular lattice filling the slab z0 < z < z1: `perCell` points per
+/// horizontal axis in every cell, nz layers along the vertical.
+template <int D, class F>
+void forEachLatticePoint(const Grid<D>& grid, int perCell, Real z0, Real z1, Index nz, F&& emit) {
+    Index nh = 1;
+    for (int d = 0; d < D - 1; ++d) nh *= grid.cells(d) * perCell;
+    const Real dz = (z1 - z0) / nz;
+    const Real footprint = grid.footprint() / std::pow(Real(perCell), D - 1);
+    const Real spacing = grid.h() / perCell;
+    Vec<D> x;
+    for (Index iz = 0; iz < nz; ++iz) {
+        for (Index ih = 0; ih < nh; ++ih) {
+            Index rest = ih;
+            for (int d = 0; d < D - 1; ++d) {
+                const Index n = grid.cells(d) * perCell;
+                x[d] = (rest % n + 0.5) * spacing;
+                rest /= n;
+            }
+            x[D - 1] = z0 + (iz + 0.5) * dz;
+            emit(x, footprint * dz);
+        }
+    }
+}
+
+template <int D>
+void appendSolid(SolidPoints<D>& s, const Vec<D>& x, Real V, Real n, Real rhoS, int material,
+                 const Real* stress) {
+    for (int d = 0; d < D; ++d) { s.x.push_back(x[d]); s.v.push_back(0); }
+    s.mass.push_back((1 - n) * rhoS * V);
+    s.volume.push_back(V);
+    s.porosity.push_back(n);
+    for (int k = 0; k < 6; ++k) s.stress.push_back(stress[k]);
+    s.state.push_back(kSolidState);
+    s.material.push_back(material);
+}
+
+template <int D>
+void appendLiquid(LiquidPoints<D>& l, const Vec<D>& x, Real V, Real mass, Real p) {
+    for (int d = 0; d < D; ++d) { l.x.push_back(x[d]); l.v.push_back(0); }
+    l.mass.push_back(mass);
+    l.volume.push_back(V);
+    l.pressure.push_back(p);
+    l.state.push_back(kSubmergedLiquid);
+}
+
+Index cellsIn(Real length, Real h) { return static_cast<Index>(std::llround(length / h)); }
+
+}  // namespace
+
+int freeWaterPointsPerCell(const CaseConfig& config) {
+    Real nMin = 1.0;
+    for (const auto& m : config.materials) nMin = std::min(nMin, m.minPorosity);
+    return static_cast<int>(std::ceil(config.points.liquidPerCell / nMin - 1e-9));
+}
+
+template <int D>
+void buildColumn(const CaseConfig& config, const Grid<D>& grid,
+                 const std::vector<SolidMaterial>& materials, SolidPoints<D>& solid,
+                 LiquidPoints<D>& liquid) {
+    const Real h = grid.h();
+    const Real g = config.gravity;
+    const Real rhoL = config.liquid.density;
+    const Real zWater = config.column.waterLevel;
+    const int spc = config.points.solidPerCell, lpc = config.points.liquidPerCell;
+    solid.halfLength = 0.5 * h / spc;
+    liquid.halfLength = 0.5 * h / lpc;
+
+    auto hydrostatic = [&](Real z) { return std::max(Real(0), rhoL * g * (zWater - z)); };
+
+    // Buoyant weight of the layers above each layer's top, for the K0 procedure.
+    const std::size_t nl = config.layers.size();
+    std::vector<Real> layerBottom(nl), overburden(nl, 0.0);
+    Real z = config.filterLevel();
+    for (std::size_t k = 0; k < nl; ++k) { layerBottom[k] = z; z += config.layers[k].thickness; }
+    for (std::size_t k = nl; k-- > 0;) {
+        if (k + 1 < nl) {
+            const auto& m = config.material(config.layers[k + 1].material);
+            overburden[k] = overburden[k + 1] +
+                            (1 - m.porosity) * (m.grainDensity - rhoL) * g * config.layers[k + 1].thickness;
+        }
+    }
+
+    for (std::size_t k = 0; k < nl; ++k) {
+        const auto& layer = config.layers[k];
+        const auto& mc = config.material(layer.material);
+        int matIndex = 0;
+        for (std::size_t j = 0; j < materials.size(); ++j)
+            if (materials[j].name == layer.material) matIndex = static_cast<int>(j);
+        const Real n0 = mc.porosity;
+        const Real gammaBuoyant = (1 - n0) * (mc.grainDensity - rhoL) * g;
+        const Real zb = layerBottom[k], zt = zb + layer.thickness;
+        const Index cells = cellsIn(layer.thickness, h);
+        const Real Eoed = materials[matIndex].elastic.oedometric();
+        const Real lateralRatio = mc.poissonRatio / (1 - mc.poissonRatio);
+        // Undrained start under a surcharge q: the water takes u0 = q m_v / (m_v + n/K_L).
+        Real u0 = 0;
+        if (config.initial.undrainedSurcharge) {
+            const Real mv = 1 / Eoed;
+            u0 = config.loads.surcharge * mv / (mv + n0 / config.liquid.bulkModulus);
+        }
+        forEachLatticePoint(grid, spc, zb, zt, cells * spc, [&](const Vec<D>& x, Real V) {
+            Real stress[6] = {0, 0, 0, 0, 0, 0};
+            if (config.initial.stress == InitialStress::K0) {
+                const Real sv = -(overburden[k] + gammaBuoyant * (zt - x[D - 1]));
+                stress[2] = sv;
+                stress[0] = stress[1] = mc.k0 * sv;
+            }
+            if (config.initial.undrainedSurcharge) {
+                const Real dsv = -(config.loads.surcharge - u0);
+                stress[2] += dsv;
+                stress[0] += lateralRatio * dsv;
+                stress[1] += lateralRatio * dsv;
+            }
+            appendSolid(solid, x, V, n0, mc.grainDensity, matIndex, stress);
+        });
+        forEachLatticePoint(grid, lpc, zb, zt, cells * lpc, [&](const Vec<D>& x, Real V) {
+            appendLiquid(liquid, x, V, n0 * rhoL * V, hydrostatic(x[D - 1]) + u0);
+        });
+    }
+
+    // Free water: the chamber below the filter and the water above the sand.
+    const int nzFree = freeWaterPointsPerCell(config);
+    auto freeWater = [&](Real z0, Real z1) {
+        const Index nz = std::llround((z1 - z0) / h * nzFree);
+        if (nz <= 0) return;
+        forEachLatticePoint(grid, lpc, z0, z1, nz, [&](const Vec<D>& x, Real V) {
+            appendLiquid(liquid, x, V, rhoL * V, hydrostatic(x[D - 1]));
+        });
+    };
+    freeWater(0.0, config.filterLevel());
+    if (zWater > config.sandTop() + 1e-12) freeWater(config.sandTop(), zWater);
+}
+
+template void buildColumn<1>(const CaseConfig&, const Grid<1>&, const std::vector<SolidMaterial>&,
+                             SolidPoints<1>&, LiquidPoints<1>&);
+template void buildColumn<2>(const CaseConfig&, const Grid<2>&, const std::vector<SolidMaterial>&,
+                             SolidPoints<2>&, LiquidPoints<2>&);
+template void buildColumn<3>(const CaseConfig&, const Grid<3>&, const std::vector<SolidMaterial>&,
+                             SolidPoints<3>&, LiquidPoints<3>&);
+
+}  // namespace qs

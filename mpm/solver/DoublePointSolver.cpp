@@ -1,0 +1,902 @@
+#include "solver/DoublePointSolver.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "grid/ShapeFunctions.hpp"
+#include "materials/StressTensor.hpp"
+#include "physics/ClosedForms.hpp"
+#include "solver/ColumnBuilder.hpp"
+#include "solver/Parallel.hpp"
+
+namespace qs {
+
+namespace {
+Index roundCells(Real length, Real h) { return static_cast<Index>(std::llround(length / h)); }
+}  // namespace
+
+// ---------------------------------------------------------------------------------------------
+// Set-up
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel& reservoir)
+    : config_(config), reservoir_(reservoir) {
+    const Real h = config.grid.cellSize;
+    IVec<D> cells;
+    for (int d = 0; d < D - 1; ++d) cells[d] = roundCells(config.grid.width, h);
+    cells[D - 1] = roundCells(config.column.top, h);
+    grid_ = Grid<D>(cells, h, config.grid.crossSectionArea);
+
+    const Real rhoL = config.liquid.density, KL = config.liquid.bulkModulus;
+    waveSpeed_ = std::sqrt(KL / rhoL);  // free water
+    for (const auto& m : config.materials) {
+        QS_CHECK(m.model == ConstitutiveModel::LinearElastic,
+                 "materials." << m.name << ".model: only \"linear_elastic\" is implemented so far");
+        SolidMaterial s;
+        s.name = m.name;
+        s.grainDensity = m.grainDensity;
+        s.maxPorosity = m.maxPorosity;
+        s.elastic = LinearElastic::fromYoung(m.youngsModulus, m.poissonRatio);
+        s.permeability = PermeabilityLaw::from(m);
+        materials_.push_back(s);
+        const auto c = closed::zeroDragWaveSpeeds(s.elastic.oedometric(), KL, m.porosity,
+                                                  m.grainDensity, rhoL);
+        waveSpeed_ = std::max(waveSpeed_, c.fast);
+    }
+    // dt = C h / c_fast: with implicit drag the fastest explicit wave is the zero-drag fast wave.
+    dt_ = config.time.courant * h / waveSpeed_;
+    if (config.time.dt) {
+        const Real stable = 0.5 * h / waveSpeed_;
+        QS_CHECK(*config.time.dt <= stable,
+                 config.caseDirectory << "/case.toml: key 'time.dt': " << *config.time.dt
+                                      << " s exceeds the stable step 0.5 h / c_fast = " << stable
+                                      << " s (c_fast = " << waveSpeed_ << " m/s)");
+        dt_ = *config.time.dt;
+    }
+
+    buildColumn(config, grid_, materials_, solid_, liquid_);
+    allocate();
+    buildBoundaryMasks();
+
+    // New points must not leave sand cells empty when they get there (physics.md, inflow).
+    injectVolume_ = grid_.cellVolume() / freeWaterPointsPerCell(config) /
+                    std::pow(Real(config.points.liquidPerCell), D - 1);
+
+    for (const auto& m : config.monitors) {
+        const Index row = std::clamp<Index>(std::llround(m.elevation / h), 0, grid_.nodes(D - 1) - 1);
+        monitorNodes_.push_back(row);
+    }
+    sandBottomRow_ = roundCells(config.filterLevel(), h);
+
+    initialLiquidMass_ = 0;
+    for (Real m : liquid_.mass) initialLiquidMass_ += m;
+    gateLaw_ = reservoir_.gateLaw(0.0);
+    gatePressure_ = gateLaw_.staticPressure;
+    // fill the cell and node fields once so that the state at t = 0 can be reported
+    sortPoints();
+    classifyCells();
+    pointsToGrid();
+    computeForces();
+}
+
+template <int D>
+void DoublePointSolver<D>::allocate() {
+    const Index nn = grid_.numNodes(), nc = grid_.numCells();
+    for (auto* a : {&massS_, &massL_, &solidVolume_, &nodeVolume_, &porosity_, &dragA_, &dragB_,
+                    &drag_, &relSpeed_})
+        a->assign(nn, 0.0);
+    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velSOld_, &velLOld_})
+        a->assign(nn * D, 0.0);
+    solidFixed_.assign(nn * D, 0);
+    liquidFixed_.assign(nn * D, 0);
+    solidCellStart_.assign(nc + 1, 0);
+    liquidCellStart_.assign(nc + 1, 0);
+    counts_.assign(nc + 1, 0);
+    cellActive_.assign(nc, 0);
+    cellSubmerged_.assign(nc, 0);
+    for (auto* a : {&cellLiquidVolume_, &cellPressure_, &cellWeight_, &cellPorosity_,
+                    &cellPressureIncrement_})
+        a->assign(nc, 0.0);
+    cellPorosityGrad_.assign(nc * D, 0.0);
+
+    // Liquid points come and go: reserve for the densest filling the run can reach.
+    const std::size_t liquidCapacity =
+        4 * static_cast<std::size_t>(nc) * freeWaterPointsPerCell(config_) *
+            static_cast<std::size_t>(std::pow(config_.points.liquidPerCell, D - 1)) + liquid_.size();
+    reservePoints(liquid_, liquidCapacity, scratch_, 6);
+    reservePoints(solid_, solid_.size(), scratch_, 6);
+    scratch_.reals.reserve(liquidCapacity * 6);
+    scratch_.ints.reserve(liquidCapacity);
+    scratch_.order.reserve(liquidCapacity);
+    liquid_.shape.reserve(liquidCapacity);
+    liquid_.weight.reserve(liquidCapacity);
+    liquid_.strainVol.reserve(liquidCapacity);
+    solid_.shape.reserve(solid_.size());
+    dropFlags_.reserve(liquidCapacity);
+
+    Index columns = 1;
+    for (int d = 0; d < D - 1; ++d) columns *= grid_.cells(d);
+    gap_.assign(columns, 0.0);
+}
+
+template <int D>
+void DoublePointSolver<D>::buildBoundaryMasks() {
+    const Index filterRow = roundCells(config_.filterLevel(), grid_.h());
+    for (Index i = 0; i < grid_.numNodes(); ++i) {
+        const IVec<D> n = grid_.nodeCoords(i);
+        // smooth lateral walls: the normal component of both phases is held
+        for (int d = 0; d < D - 1; ++d) {
+            if (n[d] == 0 || n[d] == grid_.nodes(d) - 1) {
+                solidFixed_[i * D + d] = 1;
+                liquidFixed_[i * D + d] = 1;
+            }
+        }
+        // the filter holds the solid both ways (a one-way support lets the bed lift off as a plug)
+        if (n[D - 1] == filterRow) {
+            solidFixed_[i * D + D - 1] = 1;
+            filterNodes_.push_back(i);
+        }
+        if (n[D - 1] == 0) {
+            gateNodes_.push_back(i);
+            if (config_.gate.mode != GateMode::Pressure) liquidFixed_[i * D + D - 1] = 1;
+            solidFixed_[i * D + D - 1] = 1;
+        }
+        if (config_.initial.rigidSkeleton)
+            for (int d = 0; d < D; ++d) solidFixed_[i * D + d] = 1;
+    }
+}
+
+template <int D>
+Real DoublePointSolver<D>::nodeFootprint(Index node) const {
+    // share of the horizontal face carried by one node (the whole area in 1D)
+    const IVec<D> n = grid_.nodeCoords(node);
+    Real a = grid_.outOfPlane();
+    for (int d = 0; d < D - 1; ++d) {
+        const bool edge = n[d] == 0 || n[d] == grid_.nodes(d) - 1;
+        a *= edge ? 0.5 * grid_.h() : grid_.h();
+    }
+    return a;
+}
+
+// ---------------------------------------------------------------------------------------------
+// 1 sort points by cell, classify cells
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+template <class Set>
+void DoublePointSolver<D>::computeShape(Set& set, std::vector<Index>& cellStart,
+                                        std::vector<Index>& counts) {
+    const Index n = static_cast<Index>(set.size());
+    set.shape.resize(n);
+    auto& cell = set.shape.cell;
+    forAll(n, [&](Index p) { cell[p] = grid_.cellOf(&set.x[p * D]); });
+
+    bool sorted = true;
+    for (Index p = 1; p < n && sorted; ++p) sorted = cell[p] >= cell[p - 1];
+    std::fill(counts.begin(), counts.end(), 0);
+    for (Index p = 0; p < n; ++p) ++counts[cell[p] + 1];
+    for (Index c = 0; c < grid_.numCells(); ++c) counts[c + 1] += counts[c];
+    std::copy(counts.begin(), counts.end(), cellStart.begin());
+    if (!sorted) {
+        // counting sort: stable, so points of a cell keep their relative order
+        auto& order = scratch_.order;
+        order.resize(n);
+        for (Index p = 0; p < n; ++p) order[counts[cell[p]]++] = p;
+        reorderPoints(set, order, scratch_);
+        forAll(n, [&](Index p) { cell[p] = grid_.cellOf(&set.x[p * D]); });
+    }
+
+    const auto kind = config_.grid.shapeFunctions;
+    const Real h = grid_.h(), lp = set.halfLength;
+    forAll(n, [&](Index p) {
+        Index start = 0;
+        for (int d = 0; d < D; ++d) {
+            const AxisWeights a = axisWeights(set.x[p * D + d], h, grid_.cells(d), kind, lp);
+            start += a.start * grid_.nodeStride(d);
+            for (int k = 0; k < kStencil; ++k) {
+                set.shape.w[(p * D + d) * 3 + k] = a.w[k];
+                set.shape.dw[(p * D + d) * 3 + k] = a.dw[k];
+            }
+        }
+        set.shape.start[p] = start;
+    });
+}
+
+template <int D>
+void DoublePointSolver<D>::sortPoints() {
+    computeShape(solid_, solidCellStart_, counts_);
+    computeShape(liquid_, liquidCellStart_, counts_);
+}
+
+template <int D>
+void DoublePointSolver<D>::classifyCells() {
+    const Index nc = grid_.numCells();
+    forAll(nc, [&](Index c) {
+        Real vol = 0;
+        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) vol += liquid_.volume[p];
+        cellLiquidVolume_[c] = vol;
+        cellActive_[c] = (liquidCellStart_[c + 1] > liquidCellStart_[c]) ||
+                         (solidCellStart_[c + 1] > solidCellStart_[c]);
+    });
+    // A cell is below the free surface when the cell above holds liquid. There the cell's liquid
+    // points share the whole cell, V* = V_cell V / sum V, so they fill the pores and a half-empty
+    // chamber cell carries no multiple of the gate pressure; above it V* = V (physics.md).
+    const Index up = grid_.cellStride(D - 1);
+    const Index rows = grid_.cells(D - 1);
+    liquid_.weight.resize(liquid_.size());
+    forAll(nc, [&](Index c) {
+        const Index row = (c / up) % rows;
+        const bool above = row + 1 < rows && liquidCellStart_[c + up + 1] > liquidCellStart_[c + up];
+        cellSubmerged_[c] = above;
+        const Real scale = above && cellLiquidVolume_[c] > 0 ? grid_.cellVolume() / cellLiquidVolume_[c] : 1.0;
+        const bool thin = cellLiquidVolume_[c] < config_.liquid.freeSurfaceFilling * grid_.cellVolume();
+        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+            liquid_.weight[p] = liquid_.volume[p] * scale;
+            liquid_.state[p] = (!above && thin) ? kFreeSurfaceLiquid : kSubmergedLiquid;
+        }
+    });
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2 points to grid
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::pointsToGrid() {
+    for (auto* a : {&massS_, &massL_, &solidVolume_, &dragA_, &dragB_})
+        std::fill(a->begin(), a->end(), 0.0);
+    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_}) std::fill(a->begin(), a->end(), 0.0);
+
+    // Solid: mass, momentum, grain volume, drag sums and the effective-stress force
+    // F_int,S = sum grad(N)^T sigma' V (subtracted).
+    forEachPointColoured(grid_, solidCellStart_, [&](Index p) {
+        const Real m = solid_.mass[p], V = solid_.volume[p];
+        const auto& mat = materials_[solid_.material[p]];
+        const Real grains = m / mat.grainDensity;
+        const Real n = solid_.porosity[p];
+        const Real kappa = mat.permeability.kappa(n);
+        const Real a = V / kappa;
+        const Real b = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
+        const Real* s = &solid_.stress[p * 6];
+        const Real* v = &solid_.v[p * D];
+        forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                      &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+            massS_[i] += N * m;
+            solidVolume_[i] += N * grains;
+            dragA_[i] += N * a;
+            dragB_[i] += N * b;
+            for (int d = 0; d < D; ++d) {
+                momS_[i * D + d] += N * m * v[d];
+                Real f = 0;
+                for (int e = 0; e < D; ++e) f += s[voigt(axis3<D>(d), axis3<D>(e))] * gradN[e];
+                forceS_[i * D + d] -= f * V;
+            }
+        });
+    });
+    forEachPointColoured(grid_, liquidCellStart_, [&](Index p) {
+        const Real m = liquid_.mass[p];
+        const Real* v = &liquid_.v[p * D];
+        forStencil<D>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
+                      &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*) {
+            massL_[i] += N * m;
+            for (int d = 0; d < D; ++d) momL_[i * D + d] += N * m * v[d];
+        });
+    });
+
+    // Nodal porosity n_i = 1 - (sum N m_s / rho_s) / V_i with V_i = integral of N_i over the
+    // active cells only: over the whole grid the sand surface would look far too porous.
+    const Real cellShare = grid_.cellVolume() / (1 << D);
+    const Real mu = config_.liquid.viscosity, rhoL = config_.liquid.density;
+    forAll(grid_.numNodes(), [&](Index i) {
+        const IVec<D> n = grid_.nodeCoords(i);
+        Real vol = 0;
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> c;
+            bool inside = true;
+            for (int d = 0; d < D; ++d) {
+                c[d] = n[d] - 1 + ((k >> d) & 1);
+                if (c[d] < 0 || c[d] >= grid_.cells(d)) inside = false;
+            }
+            if (inside && cellActive_[grid_.cellIndex(c)]) vol += cellShare;
+        }
+        nodeVolume_[i] = vol;
+        const Real por = vol > 0 ? 1 - solidVolume_[i] / vol : 1.0;
+        porosity_[i] = std::clamp(por, Real(1e-3), Real(1));
+        // Darcy + Ergun drag, lumped: Q_i = n_i^2 mu sum(N V / kappa)
+        //                                 + rho_L n_i^3 |w_i| sum(N V F / sqrt(kappa)),
+        // |w_i| from the last step (physics.md, drag).
+        const Real ni = porosity_[i];
+        drag_[i] = (massS_[i] > 0 && massL_[i] > 0)
+                       ? ni * ni * mu * dragA_[i] + rhoL * ni * ni * ni * relSpeed_[i] * dragB_[i]
+                       : 0.0;
+    });
+}
+
+// ---------------------------------------------------------------------------------------------
+// 3 forces
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::computeForces() {
+    const Real g = config_.gravity, rhoL = config_.liquid.density;
+    const Index nc = grid_.numCells();
+    const Real h = grid_.h();
+
+    // Cell pore pressure p_c = sum p V* / sum V*, cell porosity and its gradient at the centre.
+    forAll(nc, [&](Index c) {
+        Real pv = 0, w = 0;
+        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+            pv += liquid_.pressure[p] * liquid_.weight[p];
+            w += liquid_.weight[p];
+        }
+        cellWeight_[c] = w;
+        cellPressure_[c] = w > 0 ? pv / w : 0.0;
+        const IVec<D> cc = grid_.cellCoords(c);
+        Real n = 0;
+        Real grad[D] = {};
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> nd;
+            for (int d = 0; d < D; ++d) nd[d] = cc[d] + ((k >> d) & 1);
+            const Real ni = porosity_[grid_.nodeIndex(nd)];
+            n += ni / (1 << D);
+            for (int a = 0; a < D; ++a) {
+                Real gN = (((k >> a) & 1) ? 1.0 : -1.0) / h;
+                for (int d = 0; d < D; ++d)
+                    if (d != a) gN *= 0.5;
+                grad[a] += gN * ni;
+            }
+        }
+        cellPorosity_[c] = n;
+        for (int a = 0; a < D; ++a) cellPorosityGrad_[c * D + a] = grad[a];
+    });
+
+    // Pressure forces gathered per node from its cells:
+    //   F_p,L = + p_c V_c [ n_c grad N_i(x_c) + N_i(x_c) grad n_c ]
+    //   F_p,S = + p_c V_c [ (1 - n_c) grad N_i(x_c) - N_i(x_c) grad n_c ]
+    // so the liquid feels -n grad p and the solid -(1-n) grad p (physics.md, pressure forces).
+    const Real Nc = 1.0 / (1 << D);
+    forAll(grid_.numNodes(), [&](Index i) {
+        const IVec<D> n = grid_.nodeCoords(i);
+        Real fL[D] = {}, fS[D] = {};
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> c;
+            bool inside = true;
+            for (int d = 0; d < D; ++d) {
+                c[d] = n[d] - 1 + ((k >> d) & 1);
+                if (c[d] < 0 || c[d] >= grid_.cells(d)) inside = false;
+            }
+            if (!inside) continue;
+            const Index cell = grid_.cellIndex(c);
+            const Real pV = cellPressure_[cell] * cellWeight_[cell];
+            if (pV == 0) continue;
+            const Real nc_ = cellPorosity_[cell];
+            for (int a = 0; a < D; ++a) {
+                // node i is the upper node of this cell along a when the cell index is n - 1
+                Real gN = (((k >> a) & 1) ? -1.0 : 1.0) / h;
+                for (int d = 0; d < D; ++d)
+                    if (d != a) gN *= 0.5;
+                const Real gn = cellPorosityGrad_[cell * D + a];
+                fL[a] += pV * (nc_ * gN + Nc * gn);
+                fS[a] += pV * ((1 - nc_) * gN - Nc * gn);
+            }
+        }
+        for (int a = 0; a < D; ++a) {
+            forceL_[i * D + a] += fL[a];
+            forceS_[i * D + a] += fS[a];
+        }
+        forceS_[i * D + D - 1] -= massS_[i] * g;
+        forceL_[i * D + D - 1] -= massL_[i] * g;
+    });
+
+    // Gate: the reservoir's pressure acts on the chamber's liquid at the gate plane, less the
+    // weight of the empty gap below the lowest liquid point (physics.md, gate).
+    if (config_.gate.mode == GateMode::Pressure) {
+        const Index columns = static_cast<Index>(gap_.size());
+        for (Index i : gateNodes_) {
+            Index col = 0;
+            if (D > 1) col = std::min<Index>(grid_.nodeCoords(i)[0], columns - 1);
+            const Real p = gateLaw_.staticPressure - rhoL * g * gap_[col];
+            forceL_[i * D + D - 1] += p * nodeFootprint(i);
+        }
+    }
+
+    // Surcharge on the sand top (solid phase) and the overflow level's missing water on the
+    // free surface, both as tractions at the surface elevation, N_i(z_surface).
+    auto surfaceTraction = [&](std::vector<Real>& force, Real zSurface, Real pressure) {
+        const Index row = std::clamp<Index>(static_cast<Index>(std::floor(zSurface / h)), 0,
+                                            grid_.cells(D - 1) - 1);
+        const Real xi = zSurface / h - row;
+        for (Index i = 0; i < grid_.numNodes(); ++i) {
+            const Index nz = grid_.nodeCoords(i)[D - 1];
+            const Real N = nz == row ? 1 - xi : (nz == row + 1 ? xi : 0.0);
+            if (N != 0) force[i * D + D - 1] -= pressure * N * nodeFootprint(i);
+        }
+    };
+    const Real q = surchargeNow();
+    if (q != 0) surfaceTraction(forceS_, sandSurface(), q);
+    surfacePressure_ = 0;
+    if (config_.column.overflowLevel) {
+        const Real zs = waterSurfaceFromMass();
+        if (zs > 0) {
+            surfacePressure_ = rhoL * g * (*config_.column.overflowLevel - zs);
+            surfaceTraction(forceL_, zs, surfacePressure_);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4 nodal update with implicit drag and boundary conditions
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::solveNodes() {
+    const Real dt = dt_;
+    const Real vGate = gateVelocityNow();
+    Real area = 0;
+    for (Index i : gateNodes_) area += nodeFootprint(i);
+    const Real gateResistance = config_.gate.mode == GateMode::Pressure ? gateLaw_.resistance : 0.0;
+    const Index rowStride = grid_.nodeStride(D - 1);
+
+    forAll(grid_.numNodes(), [&](Index i) {
+        const Real mS = massS_[i], mL = massL_[i], Q = drag_[i];
+        const bool isGate = i < rowStride;  // bottom node row
+        // implicit tube loss at the gate: M_L v = M_L v* - dt c v, c = R A_total A_i
+        const Real c = isGate ? gateResistance * area * nodeFootprint(i) : 0.0;
+        Real w2 = 0;
+        for (int d = 0; d < D; ++d) {
+            const Index k = i * D + d;
+            Real vS0 = mS > 0 ? momS_[k] / mS : 0.0;
+            Real vL0 = mL > 0 ? momL_[k] / mL : 0.0;
+            Real fS = forceS_[k], fL = forceL_[k];
+            if (damping_) {
+                // local damping, gravity stage only: F <- F - alpha |F| sign(v)
+                fS -= dampingAlpha_ * std::abs(fS) * (vS0 > 0 ? 1 : (vS0 < 0 ? -1 : 0));
+                fL -= dampingAlpha_ * std::abs(fL) * (vL0 > 0 ? 1 : (vL0 < 0 ? -1 : 0));
+            }
+            const Real vS1 = mS > 0 ? vS0 + dt * fS / mS : 0.0;  // drag-free predictors
+            const Real vL1 = mL > 0 ? vL0 + dt * fL / mL : 0.0;
+            const bool vertical = d == D - 1;
+            const Real cd = vertical ? c : 0.0;
+            const Real vLfix = (isGate && vertical) ? vGate : 0.0;
+            Real vS = 0, vL = 0;
+            if (mS > 0 && mL > 0) {
+                if (solidFixed_[k] && liquidFixed_[k]) {
+                    vS = 0; vL = vLfix;
+                } else if (solidFixed_[k]) {
+                    // solid held: solve the liquid alone (solving the pair and overwriting one
+                    // afterwards loses momentum)
+                    vS = 0;
+                    vL = (mL * vL1) / (mL + dt * Q + dt * cd);
+                } else if (liquidFixed_[k]) {
+                    vL = vLfix;
+                    vS = (mS * vS1 + dt * Q * vL) / (mS + dt * Q);
+                } else {
+                    // drag keeps M_L v_L + M_S v_S and relaxes w = v_L - v_S
+                    const Real M = mL + mS;
+                    const Real vm = (mL * vL1 + mS * vS1) / M;
+                    const Real w = (vL1 - vS1) / (1 + dt * Q * (1 / mL + 1 / mS));
+                    vL = vm + mS * w / M;
+                    vS = vm - mL * w / M;
+                }
+            } else if (mL > 0) {
+                vL = liquidFixed_[k] ? vLfix : mL * vL1 / (mL + dt * cd);
+            } else if (mS > 0) {
+                vS = solidFixed_[k] ? 0.0 : vS1;
+            }
+            velSOld_[k] = vS0;
+            velLOld_[k] = vL0;
+            velS_[k] = vS;
+            velL_[k] = vL;
+            w2 += (vL - vS) * (vL - vS);
+        }
+        relSpeed_[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
+    });
+
+    // Gate flux through the gate plane (free water: q = v_L).
+    Real Qg = 0;
+    for (Index i : gateNodes_)
+        if (massL_[i] > 0) Qg += velL_[i * D + D - 1] * nodeFootprint(i);
+    gateFlux_ = Qg;
+}
+
+// ---------------------------------------------------------------------------------------------
+// 5 grid to points: FLIP velocities, positions, strains, constitutive update
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::gridToPoints() {
+    const Real dt = dt_;
+    const Real top = grid_.top();
+    forAll(static_cast<Index>(solid_.size()), [&](Index p) {
+        Real dv[D] = {}, vNew[D] = {}, L[D][D] = {};
+        forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                      &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+            for (int d = 0; d < D; ++d) {
+                const Real v = velS_[i * D + d];
+                dv[d] += N * (v - velSOld_[i * D + d]);
+                vNew[d] += N * v;
+                for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
+            }
+        });
+        for (int d = 0; d < D; ++d) {
+            solid_.v[p * D + d] += dv[d];  // FLIP: PIC would smear the jumps at porosity interfaces
+            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * vNew[d], Real(0), top);
+        }
+        Real dEps[6] = {};
+        for (int d = 0; d < D; ++d)
+            for (int e = d; e < D; ++e)
+                dEps[voigt(axis3<D>(d), axis3<D>(e))] = 0.5 * dt * (L[d][e] + L[e][d]);
+        const Real dVol = dEps[0] + dEps[1] + dEps[2];
+        const auto& mat = materials_[solid_.material[p]];
+        Real* s = &solid_.stress[p * 6];
+        Real& n = solid_.porosity[p];
+        n = 1 - (1 - n) / (1 + dVol);  // solid mass balance, grains incompressible
+        solid_.volume[p] *= 1 + dVol;
+        if (solid_.state[p] == kFluidisedState) {
+            // fluidised material carries no effective stress; it turns back to solid when it
+            // compacts below n_max, restarting from zero effective stress
+            if (n < mat.maxPorosity && dVol < 0) solid_.state[p] = kSolidState;
+            return;
+        }
+        mat.elastic.update(s, dEps);
+        tensionCutoff(s);
+        const bool zeroStress = s[0] == 0 && s[1] == 0 && s[2] == 0;
+        if (zeroStress && n >= mat.maxPorosity && dVol >= 0) {
+            solid_.state[p] = kFluidisedState;
+            for (int k = 0; k < 6; ++k) s[k] = 0;
+        }
+    });
+
+    liquid_.strainVol.resize(liquid_.size());
+    forAll(static_cast<Index>(liquid_.size()), [&](Index p) {
+        Real dv[D] = {}, vNew[D] = {}, div = 0;
+        forStencil<D>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
+                      &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+            for (int d = 0; d < D; ++d) {
+                const Real v = velL_[i * D + d];
+                dv[d] += N * (v - velLOld_[i * D + d]);
+                vNew[d] += N * v;
+                div += v * gradN[d];
+            }
+        });
+        for (int d = 0; d < D; ++d) {
+            liquid_.v[p * D + d] += dv[d];
+            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + dt * vNew[d], Real(0), top);
+        }
+        liquid_.strainVol[p] = dt * div;
+        liquid_.volume[p] *= 1 + dt * div;  // V follows the liquid's own strain
+    });
+}
+
+// ---------------------------------------------------------------------------------------------
+// 6 pore pressure, one value per cell
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::updatePressure() {
+    // dp_c = -(K_L / n_c) dt sum_i grad N_i(x_c) . Phi_i,  Phi_i = (1-n_i) v_S,i + n_i v_L,i
+    // (compressible liquid, incompressible grains; the cell average avoids volumetric locking).
+    const Real KL = config_.liquid.bulkModulus, dt = dt_, h = grid_.h();
+    const Real pMin = config_.liquid.cavitationPressure;
+    const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
+    forAll(grid_.numCells(), [&](Index c) {
+        if (liquidCellStart_[c + 1] == liquidCellStart_[c]) return;
+        const IVec<D> cc = grid_.cellCoords(c);
+        Real div = 0;
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> nd;
+            for (int d = 0; d < D; ++d) nd[d] = cc[d] + ((k >> d) & 1);
+            const Index i = grid_.nodeIndex(nd);
+            const Real ni = porosity_[i];
+            for (int a = 0; a < D; ++a) {
+                Real gN = (((k >> a) & 1) ? 1.0 : -1.0) / h;
+                for (int d = 0; d < D; ++d)
+                    if (d != a) gN *= 0.5;
+                div += gN * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
+            }
+        }
+        const Real dp = -(KL / cellPorosity_[c]) * dt * div;
+        cellPressureIncrement_[c] = dp;
+        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+            Real& pp = liquid_.pressure[p];
+            pp = std::max(pp + dp, pMin);  // the liquid takes no tension below the cavitation limit
+            if (zeroSurface && liquid_.state[p] == kFreeSurfaceLiquid) pp = 0;
+        }
+    });
+}
+
+// ---------------------------------------------------------------------------------------------
+// 7 inflow, outflow, ledger, reservoir
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+Real DoublePointSolver<D>::lowestLiquidBottom(Index column) const {
+    // the lowest liquid point of a column of cells, scanning its two lowest cell rows
+    Real lowest = grid_.top();
+    const Real footprint = grid_.footprint() / std::pow(Real(config_.points.liquidPerCell), D - 1);
+    for (Index row = 0; row < 2; ++row) {
+        const Index c = column + row * grid_.cellStride(D - 1);
+        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+            const Real halfHeight = 0.5 * liquid_.volume[p] / footprint;
+            lowest = std::min(lowest, liquid_.x[p * D + D - 1] - halfHeight);
+        }
+    }
+    return lowest;
+}
+
+template <int D>
+void DoublePointSolver<D>::exchangeAtBoundaries() {
+    const Real rhoL = config_.liquid.density;
+    cumulativeInflow_ += gateFlux_ * dt_;
+    gatePressure_ = gateLaw_.pressure(gateFlux_);
+    reservoir_.advance(time_, dt_, gateFlux_);
+
+    // Outflow: liquid points above the overflow level leave and are counted.
+    if (config_.column.overflowLevel) {
+        const Real zOver = *config_.column.overflowLevel;
+        for (std::size_t p = 0; p < solid_.size(); ++p) {
+            if (solid_.x[p * D + D - 1] > zOver) {
+                std::ostringstream s;
+                s << "solid points reached the overflow level column.overflow_level = " << zOver
+                  << " m at t = " << time_ << " s (sand surface " << sandSurface()
+                  << " m): the bed expanded beyond the column; raise the overflow level and the grid top";
+                throw Error(s.str());
+            }
+        }
+        const std::size_t n = liquid_.size();
+        dropFlags_.resize(n);
+        bool any = false;
+        for (std::size_t p = 0; p < n; ++p) {
+            dropFlags_[p] = liquid_.x[p * D + D - 1] > zOver;
+            if (dropFlags_[p]) { outflowVolume_ += liquid_.mass[p] / rhoL; any = true; }
+        }
+        if (any) {
+            compactPoints(liquid_, dropFlags_);
+            // the cell lists are stale now; the next sort rebuilds them
+            std::fill(liquidCellStart_.begin(), liquidCellStart_.end(), 0);
+        }
+    }
+
+    // Inflow: when the gap below the lowest liquid point of a chamber column reaches one new
+    // point's height, inject one (physics.md, inflow).
+    if (config_.gate.mode != GateMode::Closed) {
+        const int lpc = config_.points.liquidPerCell;
+        const Real footprint = grid_.footprint() / std::pow(Real(lpc), D - 1);
+        const Real height = injectVolume_ / footprint;
+        // recompute cell lists of the bottom rows if outflow cleared them
+        if (liquidCellStart_.back() == 0) computeShape(liquid_, liquidCellStart_, counts_);
+        for (Index col = 0; col < static_cast<Index>(gap_.size()); ++col) {
+            Real bottom = lowestLiquidBottom(col);
+            // velocity and pressure of the new water: those of the lowest point of the column
+            Index ref = -1;
+            for (Index row = 0; row < 2 && ref < 0; ++row) {
+                const Index c = col + row * grid_.cellStride(D - 1);
+                for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p)
+                    if (ref < 0 || liquid_.x[p * D + D - 1] < liquid_.x[ref * D + D - 1]) ref = p;
+            }
+            while (bottom >= height) {
+                const IVec<D> cc = grid_.cellCoords(col);
+                const Real spacing = grid_.h() / lpc;
+                const int nh = static_cast<int>(std::pow(lpc, D - 1));
+                for (int k = 0; k < nh; ++k) {
+                    int rest = k;
+                    for (int d = 0; d < D - 1; ++d) {
+                        liquid_.x.push_back(cc[d] * grid_.h() + (rest % lpc + 0.5) * spacing);
+                        rest /= lpc;
+                    }
+                    liquid_.x.push_back(bottom - 0.5 * height);
+                    for (int d = 0; d < D; ++d)
+                        liquid_.v.push_back(ref >= 0 ? liquid_.v[ref * D + d] : 0.0);
+                    liquid_.mass.push_back(rhoL * injectVolume_);
+                    liquid_.volume.push_back(injectVolume_);
+                    liquid_.pressure.push_back(ref >= 0 ? liquid_.pressure[ref] : gatePressure_);
+                    liquid_.state.push_back(kSubmergedLiquid);
+                    injectedVolume_ += injectVolume_;
+                }
+                bottom -= height;
+            }
+            gap_[col] = std::max(Real(0), bottom);
+        }
+    }
+
+    time_ += dt_;
+    ++steps_;
+    gateLaw_ = reservoir_.gateLaw(time_);
+}
+
+// ---------------------------------------------------------------------------------------------
+// the step
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::step() {
+    sortPoints();
+    classifyCells();
+    pointsToGrid();
+    computeForces();
+    solveNodes();
+    gridToPoints();
+    updatePressure();
+    exchangeAtBoundaries();
+    if (!std::isfinite(gateFlux_)) {
+        std::ostringstream s;
+        s << "the solution became non-finite at t = " << time_ << " s (step " << steps_
+          << "); reduce time.courant (now " << config_.time.courant << ")";
+        throw Error(s.str());
+    }
+}
+
+template <int D>
+void DoublePointSolver<D>::runGravityStage() {
+    const Real duration = config_.initial.gravityStageDuration;
+    if (duration <= 0) return;
+    damping_ = true;
+    dampingAlpha_ = config_.initial.gravityStageDamping;
+    const Real t0 = time_;
+    const auto saved = reservoir_.saveState();
+    while (time_ - t0 < duration) step();
+    reservoir_.restoreState(saved);
+    damping_ = false;
+    // the dynamic stage starts at rest at t = 0
+    time_ = 0;
+    steps_ = 0;
+    std::fill(solid_.v.begin(), solid_.v.end(), 0.0);
+    std::fill(liquid_.v.begin(), liquid_.v.end(), 0.0);
+    std::fill(relSpeed_.begin(), relSpeed_.end(), 0.0);
+    cumulativeInflow_ = injectedVolume_ = outflowVolume_ = 0;
+    initialLiquidMass_ = 0;
+    for (Real m : liquid_.mass) initialLiquidMass_ += m;
+    initialGapVolume_ = 0;
+    for (Real g : gap_) initialGapVolume_ += g;
+    gateLaw_ = reservoir_.gateLaw(0.0);
+}
+
+// ---------------------------------------------------------------------------------------------
+// loads and measurements
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+Real DoublePointSolver<D>::surchargeNow() const {
+    const Real q = config_.loads.surcharge, ramp = config_.loads.surchargeRampTime;
+    if (damping_) return config_.initial.undrainedSurcharge ? q : 0.0;
+    return (ramp > 0 && time_ < ramp) ? q * time_ / ramp : q;
+}
+
+template <int D>
+Real DoublePointSolver<D>::gateVelocityNow() const {
+    if (config_.gate.mode != GateMode::Flux) return 0.0;
+    const Real v = config_.gate.flux, ramp = config_.gate.fluxRampTime;
+    return (ramp > 0 && time_ < ramp) ? v * time_ / ramp : v;
+}
+
+template <int D>
+Real DoublePointSolver<D>::sandSurface() const {
+    const Real footprint = grid_.footprint() / std::pow(Real(config_.points.solidPerCell), D - 1);
+    Real top = config_.filterLevel();
+    for (std::size_t p = 0; p < solid_.size(); ++p)
+        top = std::max(top, solid_.x[p * D + D - 1] + 0.5 * solid_.volume[p] / footprint);
+    return top;
+}
+
+template <int D>
+Real DoublePointSolver<D>::waterSurfaceFromMass() const {
+    // z_surface from the liquid mass above a reference plane one cell above the sand (the MP
+    // volumes drift; the mass does not). Points straddling the plane count by their fraction.
+    const Real zRef = sandSurface() + grid_.h();
+    const Real footprint = grid_.footprint() / std::pow(Real(config_.points.liquidPerCell), D - 1);
+    const Real rhoL = config_.liquid.density;
+    Real mass = 0;
+    for (std::size_t p = 0; p < liquid_.size(); ++p) {
+        const Real z = liquid_.x[p * D + D - 1];
+        const Real half = 0.5 * liquid_.mass[p] / rhoL / footprint;
+        if (z + half <= zRef) continue;
+        const Real frac = std::min(Real(1), (z + half - zRef) / (2 * half));
+        mass += frac * liquid_.mass[p];
+    }
+    Real columns = 1;
+    for (int d = 0; d < D - 1; ++d) columns *= grid_.cells(d);
+    if (mass == 0) return 0.0;
+    return zRef + mass / (rhoL * grid_.footprint() * columns);
+}
+
+template <int D>
+ColumnState DoublePointSolver<D>::columnState() const {
+    ColumnState s;
+    s.time = time_;
+    s.gateFlux = gateFlux_;
+    s.gatePressure = gatePressure_;
+    s.reservoirHead = reservoir_.head();
+    s.sandSurface = sandSurface();
+    s.waterSurface = waterSurfaceFromMass();
+    for (Index row : monitorNodes_) {
+        // q = n (v_L - v_S) on the grid, averaged over the section's nodes by footprint
+        Real q = 0, a = 0;
+        for (Index i = 0; i < grid_.numNodes(); ++i) {
+            if (grid_.nodeCoords(i)[D - 1] != row || massL_[i] <= 0) continue;
+            const Real w = nodeFootprint(i);
+            q += w * porosity_[i] * (velL_[i * D + D - 1] - velS_[i * D + D - 1]);
+            a += w;
+        }
+        s.monitorFlux.push_back(a > 0 ? q / a : 0.0);
+    }
+    s.cumulativeInflow = cumulativeInflow_;
+    s.cumulativeOutflow = outflowVolume_;
+    for (Real m : solid_.mass) s.solidMass += m;
+    for (Real m : liquid_.mass) s.liquidMass += m;
+    Real gapVolume = 0;
+    for (Real g : gap_) gapVolume += g;
+    gapVolume *= grid_.footprint();
+    const Real stored = (s.liquidMass - initialLiquidMass_) / config_.liquid.density +
+                        gapVolume - initialGapVolume_ * grid_.footprint();
+    s.ledgerResidual = cumulativeInflow_ - outflowVolume_ - stored;
+    s.solidPoints = solid_.size();
+    s.liquidPoints = liquid_.size();
+
+    // hydraulic gradient: linear fit of the cell pressures over the interior sand cells (the
+    // bottom and top sand cells excluded), i = -(dp/dz)/(rho_L g) - 1
+    const auto rows = profile();
+    const Real zTop = s.sandSurface;
+    double sz = 0, sp = 0, szz = 0, szp = 0;
+    int count = 0;
+    for (const auto& r : rows) {
+        if (r.z < config_.filterLevel() + grid_.h() || r.z > zTop - grid_.h()) continue;
+        sz += r.z; sp += r.porePressure; szz += r.z * r.z; szp += r.z * r.porePressure;
+        ++count;
+    }
+    if (count >= 2 && config_.gravity > 0) {
+        const double slope = (count * szp - sz * sp) / (count * szz - sz * sz);
+        s.gradient = -slope / (config_.liquid.density * config_.gravity) - 1;
+    }
+    return s;
+}
+
+template <int D>
+std::vector<CellRow> DoublePointSolver<D>::profile() const {
+    const Index rows = grid_.cells(D - 1);
+    const Index perRow = grid_.numCells() / rows;
+    std::vector<CellRow> out(rows);
+    for (Index r = 0; r < rows; ++r) {
+        CellRow& row = out[r];
+        row.z = grid_.cellCentre(r);
+        Real pw = 0, w = 0;
+        for (Index k = 0; k < perRow; ++k) {
+            const Index c = r * perRow + k;
+            pw += cellPressure_[c] * cellWeight_[c];
+            w += cellWeight_[c];
+            row.liquidCount += static_cast<int>(liquidCellStart_[c + 1] - liquidCellStart_[c]);
+        }
+        row.porePressure = w > 0 ? pw / w : 0.0;
+    }
+    for (std::size_t p = 0; p < solid_.size(); ++p) {
+        const Index r = std::clamp<Index>(static_cast<Index>(solid_.x[p * D + D - 1] / grid_.h()), 0, rows - 1);
+        out[r].verticalStress += solid_.stress[p * 6 + 2];
+        out[r].horizontalStress += solid_.stress[p * 6 + 0];
+        out[r].porosity += solid_.porosity[p];
+        ++out[r].solidCount;
+    }
+    for (Index r = 0; r < rows; ++r) {
+        auto& row = out[r];
+        if (row.solidCount > 0) {
+            row.verticalStress /= row.solidCount;
+            row.horizontalStress /= row.solidCount;
+            row.porosity /= row.solidCount;
+        }
+        Real q = 0, a = 0;
+        for (Index i = r * grid_.nodeStride(D - 1); i < (r + 1) * grid_.nodeStride(D - 1); ++i) {
+            const Real wgt = nodeFootprint(i);
+            q += wgt * porosity_[i] * (velL_[i * D + D - 1] - velS_[i * D + D - 1]);
+            a += wgt;
+        }
+        row.filterVelocity = a > 0 ? q / a : 0.0;
+    }
+    return out;
+}
+
+template class DoublePointSolver<1>;
+template class DoublePointSolver<2>;
+template class DoublePointSolver<3>;
+
+}  // namespace qs

@@ -1,0 +1,160 @@
+#pragma once
+// DoublePointSolver<D>: the explicit double-point MPM step for a saturated sand column
+// (physics.md section 2; Anura3D lineage: Bandara & Soga 2015, Martinelli & Rohe).
+//
+// Usage:
+//   ConstantHead reservoir(...);                       // any ReservoirModel
+//   DoublePointSolver<1> solver(config, reservoir);    // builds grid and points from the case
+//   while (solver.time() < config.time.end) solver.step();
+//   ColumnState s = solver.columnState();              // fluxes, pressures, ledger
+//
+// One step, as named phases over plain arrays (structure of arrays, OpenMP, no allocation):
+//   1 sortPoints          points by cell; active cells; liquid weights V*; free surface
+//   2 pointsToGrid        lumped masses, momenta, nodal porosity, drag coefficients
+//   3 computeForces       gravity, effective stress, cell pore pressure, gate and surface tractions
+//   4 solveNodes          predictors, implicit drag, filter / walls / gate
+//   5 gridToPoints        FLIP velocities, positions, strains, stress, porosity, liquid volume
+//   6 updatePressure      cell pore-pressure increment from the mixed volumetric strain
+//   7 exchangeAtBoundaries  inflow injection, outflow removal, ledger, reservoir
+// Every phase is deterministic: results do not depend on the number of OpenMP threads.
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "grid/Grid.hpp"
+#include "io/CaseConfig.hpp"
+#include "materials/LinearElastic.hpp"
+#include "physics/Permeability.hpp"
+#include "points/LiquidPoints.hpp"
+#include "points/SolidPoints.hpp"
+#include "reservoir/ReservoirModel.hpp"
+
+namespace qs {
+
+class CheckpointData;
+
+/// The material constants a solid point needs, resolved once from MaterialConfig.
+struct SolidMaterial {
+    std::string name;
+    Real grainDensity = 0;
+    Real maxPorosity = 0;
+    LinearElastic elastic;
+    PermeabilityLaw permeability;
+};
+
+/// What the column looks like now: the quantities written to series.csv.
+struct ColumnState {
+    Real time = 0;
+    Real gateFlux = 0;            ///< m3/s into the column through the gate plane
+    Real gatePressure = 0;        ///< Pa at the gate plane
+    Real reservoirHead = 0;       ///< m above the gate plane
+    Real sandSurface = 0;         ///< m, top of the highest solid point
+    Real waterSurface = 0;        ///< m, free surface from the liquid mass above the sand
+    Real gradient = 0;            ///< -, hydraulic gradient fitted over the interior sand cells
+    std::vector<Real> monitorFlux;  ///< m/s, filter velocity q = n (v_L - v_S) per monitor
+    Real cumulativeInflow = 0;    ///< m3 through the gate (grid flux integrated in time)
+    Real cumulativeOutflow = 0;   ///< m3 removed above the overflow level
+    Real ledgerResidual = 0;      ///< m3, inflow - outflow - stored (should stay ~0)
+    Real solidMass = 0;           ///< kg
+    Real liquidMass = 0;          ///< kg
+    std::size_t solidPoints = 0, liquidPoints = 0;
+};
+
+/// Cell-row means along the vertical (the profile a user compares with a closed form).
+struct CellRow {
+    Real z = 0;                   ///< m, row centre
+    Real porePressure = 0;        ///< Pa, cell pressure
+    Real verticalStress = 0;      ///< Pa, mean sigma'_zz of the row's solid points (tension +)
+    Real horizontalStress = 0;    ///< Pa, mean sigma'_xx
+    Real porosity = 0;            ///< -, mean of the row's solid points
+    Real filterVelocity = 0;      ///< m/s, q at the row's lower node
+    int solidCount = 0, liquidCount = 0;
+};
+
+template <int D>
+class DoublePointSolver {
+public:
+    DoublePointSolver(const CaseConfig& config, ReservoirModel& reservoir);
+
+    /// Advances by dt(). Throws qs::Error if the state becomes invalid (solid reaching the
+    /// overflow, a non-finite value), naming time and place.
+    void step();
+    /// Runs the quasi-static gravity stage (local damping) of initial.gravity_stage_duration.
+    void runGravityStage();
+
+    Real time() const { return time_; }
+    Real dt() const { return dt_; }
+    long stepCount() const { return steps_; }
+    const Grid<D>& grid() const { return grid_; }
+    const SolidPoints<D>& solid() const { return solid_; }
+    const LiquidPoints<D>& liquid() const { return liquid_; }
+    ColumnState columnState() const;
+    std::vector<CellRow> profile() const;
+    /// Fastest wave speed used for the time step (m/s).
+    Real waveSpeed() const { return waveSpeed_; }
+
+    void saveState(CheckpointData& data) const;
+    void loadState(const CheckpointData& data);
+
+private:
+    // phases of one step
+    void sortPoints();
+    void classifyCells();
+    void pointsToGrid();
+    void computeForces();
+    void solveNodes();
+    void gridToPoints();
+    void updatePressure();
+    void exchangeAtBoundaries();
+
+    // helpers
+    void allocate();
+    void buildBoundaryMasks();
+    template <class Set>
+    void computeShape(Set& set, std::vector<Index>& cellStart, std::vector<Index>& counts);
+    Real lowestLiquidBottom(Index column) const;
+    Real waterSurfaceFromMass() const;
+    Real sandSurface() const;
+    Real surchargeNow() const;
+    Real gateVelocityNow() const;
+    Real nodeFootprint(Index node) const;
+
+    const CaseConfig& config_;
+    ReservoirModel& reservoir_;
+    Grid<D> grid_;
+    std::vector<SolidMaterial> materials_;
+    SolidPoints<D> solid_;
+    LiquidPoints<D> liquid_;
+    ReorderScratch scratch_;
+
+    // cells
+    std::vector<Index> solidCellStart_, liquidCellStart_, counts_;
+    std::vector<char> cellActive_, cellSubmerged_;
+    std::vector<Real> cellLiquidVolume_, cellPressure_, cellWeight_, cellPorosity_,
+        cellPorosityGrad_, cellPressureIncrement_;
+
+    // nodes (vectors are [node][axis])
+    std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_, velSOld_,
+        velLOld_, solidVolume_, nodeVolume_, porosity_, dragA_, dragB_, drag_, relSpeed_;
+    std::vector<char> solidFixed_, liquidFixed_;  // [node][axis]
+    std::vector<Index> gateNodes_, filterNodes_;
+
+    // columns of cells (horizontal positions) for inflow at the chamber
+    std::vector<Real> gap_;          ///< m, empty height below the lowest liquid point per column
+    std::vector<char> dropFlags_;
+
+    GateLaw gateLaw_;
+    Real dt_ = 0, time_ = 0, waveSpeed_ = 0;
+    long steps_ = 0;
+    bool damping_ = false;
+    Real dampingAlpha_ = 0;
+    Real injectVolume_ = 0;          ///< m3, volume of one injected liquid point
+    Real gateFlux_ = 0, gatePressure_ = 0;
+    Real cumulativeInflow_ = 0, injectedVolume_ = 0, outflowVolume_ = 0;
+    Real initialLiquidMass_ = 0, initialGapVolume_ = 0;
+    Real surfacePressure_ = 0;
+    std::vector<Index> monitorNodes_;
+    Index sandBottomRow_ = 0;
+};
+
+}  // namespace qs

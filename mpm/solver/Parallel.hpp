@@ -1,0 +1,87 @@
+#pragma once
+// The two parallel loop shapes of the solver, in one place (as MFEM's forall).
+//
+// forAll(n, f): f(i) for i in [0, n), OpenMP static schedule. Use it where every i writes only
+// its own outputs (nodes, cells, points reading the grid).
+//
+// forEachPointColoured(grid, cellStart, f): f(p) for every point, scattering to the grid without
+// races or locks: cells are grouped in blocks of 2 per axis, and blocks of one colour (parity per
+// axis) never share a node, since a point touches at most 3 nodes per axis (kStencil). Inside a
+// block, points run in their sorted order, so every node sums its contributions in the same order
+// whatever the number of threads: results are identical for 1 and 2 threads.
+#include "grid/Grid.hpp"
+
+namespace qs {
+
+template <class F>
+inline void forAll(Index n, F&& f) {
+#pragma omp parallel for schedule(static)
+    for (Index i = 0; i < n; ++i) f(i);
+}
+
+template <int D, class F>
+void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellStart, F&& f) {
+    IVec<D> blocks;
+    Index numBlocks = 1;
+    for (int d = 0; d < D; ++d) {
+        blocks[d] = (grid.cells(d) + 1) / 2;
+        numBlocks *= blocks[d];
+    }
+    for (int colour = 0; colour < (1 << D); ++colour) {
+#pragma omp parallel for schedule(dynamic, 4)
+        for (Index b = 0; b < numBlocks; ++b) {
+            IVec<D> bc;
+            Index rest = b;
+            bool match = true;
+            for (int d = 0; d < D; ++d) {
+                bc[d] = rest % blocks[d];
+                rest /= blocks[d];
+                if ((bc[d] & 1) != ((colour >> d) & 1)) match = false;
+            }
+            if (!match) continue;
+            // the block's cells, at most 2 per axis
+            for (int k = 0; k < (1 << D); ++k) {
+                IVec<D> c;
+                bool inside = true;
+                for (int d = 0; d < D; ++d) {
+                    c[d] = 2 * bc[d] + ((k >> d) & 1);
+                    if (c[d] >= grid.cells(d)) inside = false;
+                }
+                if (!inside) continue;
+                const Index cell = grid.cellIndex(c);
+                for (Index p = cellStart[cell]; p < cellStart[cell + 1]; ++p) f(p);
+            }
+        }
+    }
+}
+
+/// Calls f(node, N, gradN) for the kStencil^D stencil nodes of point p.
+template <int D, class F>
+inline void forStencil(const Grid<D>& grid, const Index start, const Real* w, const Real* dw, F&& f) {
+    constexpr int count = D == 1 ? 3 : (D == 2 ? 9 : 27);
+    for (int k = 0; k < count; ++k) {
+        int off[D];
+        int rest = k;
+        Index node = start;
+        for (int d = 0; d < D; ++d) {
+            off[d] = rest % 3;
+            rest /= 3;
+            node += off[d] * grid.nodeStride(d);
+        }
+        Real N = 1;
+        for (int d = 0; d < D; ++d) N *= w[d * 3 + off[d]];
+        Real grad[D];
+        for (int a = 0; a < D; ++a) {
+            Real g = dw[a * 3 + off[a]];
+            for (int d = 0; d < D; ++d)
+                if (d != a) g *= w[d * 3 + off[d]];
+            grad[a] = g;
+        }
+        bool zero = N == 0;
+        for (int a = 0; a < D; ++a) zero = zero && grad[a] == 0;
+        if (zero) continue;
+        f(node, N, grad);
+    }
+}
+
+}  // namespace qs

@@ -1,0 +1,43 @@
+#pragma once
+// Running a case: the time loop around DoublePointSolver with output, progress and checkpoints.
+//
+//   CaseConfig config = loadCase("cases/verification/geostatic");
+//   RunSummary s = runCase(config, RunOptions{});
+//
+// Output goes to CASE/output (case key output.directory): series.csv every output interval,
+// fields.h5 + fields.xdmf, checkpoint.h5 at every checkpoint interval and at the end. A previous
+// output directory is kept as output.previous; a run that fails before its first step (bad
+// input) never touches it. With resume = true the run continues from output/checkpoint.h5.
+#include <functional>
+#include <string>
+
+#include "io/CaseConfig.hpp"
+#include "solver/DoublePointSolver.hpp"
+
+namespace qs {
+
+struct RunOptions {
+    bool resume = false;          ///< continue from OUTPUT/checkpoint.h5
+    bool quiet = false;           ///< no progress lines
+    bool writeFiles = true;       ///< false: run in memory only (tests)
+    double endTime = -1;          ///< s, overrides time.end when >= 0
+    /// Called after every step with the solver's state (tests watch a run through it).
+    std::function<void(const ColumnState&)> onOutput;
+};
+
+struct RunSummary {
+    ColumnState final;
+    std::vector<CellRow> profile;
+    long steps = 0;
+    double wallSeconds = 0;
+    double pointUpdatesPerSecond = 0;  ///< (solid + liquid points) x steps / wall time
+    double dt = 0;
+    std::string outputDirectory;
+};
+
+RunSummary runCase(const CaseConfig& config, const RunOptions& options);
+
+/// The column names of series.csv for a case (time first).
+std::vector<std::string> seriesColumns(const CaseConfig& config);
+
+}  // namespace qs

@@ -1,0 +1,33 @@
+# Command-line behaviour of `quicksand` (run by ctest as `cmake -P`):
+#  1. `quicksand check` accepts every shipped case;
+#  2. a case with bad input exits non-zero with a message naming file, line and key;
+#  3. a failed run leaves an earlier output/ untouched.
+file(GLOB_RECURSE cases "${SOURCE_DIR}/cases/*/case.toml")
+foreach(c IN LISTS cases)
+  get_filename_component(dir "${c}" DIRECTORY)
+  execute_process(COMMAND "${QUICKSAND}" check "${dir}" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(NOT rc EQUAL 0)
+    message(FATAL_ERROR "quicksand check ${dir} failed (${rc}):\n${out}\n${err}")
+  endif()
+endforeach()
+
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}/bad/output")
+file(WRITE "${WORK_DIR}/bad/output/series.csv" "earlier results\n")
+file(READ "${SOURCE_DIR}/cases/verification/geostatic/case.toml" good)
+string(REPLACE "porosity = 0.38" "porosity = 1.38" bad "${good}")
+file(WRITE "${WORK_DIR}/bad/case.toml" "${bad}")
+foreach(cmd check run)
+  execute_process(COMMAND "${QUICKSAND}" ${cmd} "${WORK_DIR}/bad" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0)
+    message(FATAL_ERROR "quicksand ${cmd} accepted porosity 1.38")
+  endif()
+  if(NOT err MATCHES "case.toml:[0-9]+: key 'materials\\.[a-z_]+\\.porosity'")
+    message(FATAL_ERROR "quicksand ${cmd}: the error does not name file, line and key:\n${err}")
+  endif()
+endforeach()
+file(READ "${WORK_DIR}/bad/output/series.csv" kept)
+if(NOT kept STREQUAL "earlier results\n")
+  message(FATAL_ERROR "a failed run touched the earlier output/")
+endif()
+message(STATUS "cli checks passed (${cases})")

@@ -1,0 +1,288 @@
+// FieldWriter: write point sets, read them back with the HDF5 C API, check the XDMF index.
+#include "io/FieldWriter.hpp"
+
+#include "core/Error.hpp"
+
+#include <gtest/gtest.h>
+#include <hdf5.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// A fresh directory per test, removed afterwards.
+class FieldWriterTest : public ::testing::Test {
+protected:
+    void SetUp() override {
+        const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+        dir_ = fs::temp_directory_path() /
+               ("qs_fieldwriter_" + std::to_string(::getpid()) + "_" + info->name());
+        fs::remove_all(dir_);
+    }
+    void TearDown() override { fs::remove_all(dir_); }
+    fs::path dir_;
+};
+
+std::string readText(const fs::path& path) {
+    std::ifstream in(path);
+    std::stringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+int occurrences(const std::string& text, const std::string& what) {
+    int n = 0;
+    for (std::size_t at = text.find(what); at != std::string::npos; at = text.find(what, at + 1)) ++n;
+    return n;
+}
+
+/// Reads a whole double dataset, reporting its dimensions.
+std::vector<double> readDoubles(hid_t file, const std::string& name, std::vector<hsize_t>* dims = nullptr) {
+    const hid_t dataset = H5Dopen2(file, name.c_str(), H5P_DEFAULT);
+    EXPECT_GE(dataset, 0) << name;
+    if (dataset < 0) return {};
+    const hid_t space = H5Dget_space(dataset);
+    const int rank = H5Sget_simple_extent_ndims(space);
+    std::vector<hsize_t> d(static_cast<std::size_t>(rank));
+    H5Sget_simple_extent_dims(space, d.data(), nullptr);
+    std::vector<double> values(static_cast<std::size_t>(H5Sget_simple_extent_npoints(space)));
+    if (!values.empty()) {
+        EXPECT_GE(H5Dread(dataset, H5T_NATIVE_DOUBLE, H5S_ALL, H5S_ALL, H5P_DEFAULT, values.data()), 0);
+    }
+    H5Sclose(space);
+    H5Dclose(dataset);
+    if (dims) *dims = d;
+    return values;
+}
+
+double readDoubleAttribute(hid_t file, const std::string& object, const std::string& name) {
+    double value = -1.0;
+    const hid_t attribute = H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    EXPECT_GE(attribute, 0) << object << "@" << name;
+    if (attribute >= 0) {
+        H5Aread(attribute, H5T_NATIVE_DOUBLE, &value);
+        H5Aclose(attribute);
+    }
+    return value;
+}
+
+std::string readStringAttribute(hid_t file, const std::string& object, const std::string& name) {
+    const hid_t attribute = H5Aopen_by_name(file, object.c_str(), name.c_str(), H5P_DEFAULT, H5P_DEFAULT);
+    if (attribute < 0) return "<missing>";
+    const hid_t type = H5Aget_type(attribute);
+    std::string value(H5Tget_size(type), '\0');
+    H5Aread(attribute, type, &value[0]);
+    H5Tclose(type);
+    H5Aclose(attribute);
+    return value.substr(0, value.find('\0'));
+}
+
+bool exists(hid_t file, const std::string& path) { return H5Lexists(file, path.c_str(), H5P_DEFAULT) > 0; }
+
+}  // namespace
+
+TEST_F(FieldWriterTest, OneDimensionalColumnStandsAlongZ) {
+    const std::vector<double> z = {0.1, 0.2, 0.3};
+    const std::vector<double> porosity = {0.40, 0.41, 0.42};
+    const std::vector<double> velocity = {-1.0, -2.0, -3.0};
+    const std::vector<double> state = {0.0, 1.0, 2.0};  // integers, converted by the caller
+    {
+        qs::FieldWriter writer(dir_.string(), 1);
+        writer.beginStep(0.25);
+        writer.writePointSet("solid", 3, z.data(),
+                             {{"porosity", porosity.data(), 1},
+                              {"velocity", velocity.data(), 1, qs::FieldKind::Vector},
+                              {"state", state.data(), 1}});
+        writer.endStep();
+        EXPECT_EQ(writer.stepsWritten(), 1);
+    }
+    const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    std::vector<hsize_t> dims;
+    EXPECT_EQ(readDoubles(file, "/step_000000/solid/positions", &dims),
+              (std::vector<double>{0, 0, 0.1, 0, 0, 0.2, 0, 0, 0.3}));
+    EXPECT_EQ(dims, (std::vector<hsize_t>{3, 3}));
+    EXPECT_EQ(readDoubles(file, "/step_000000/solid/porosity", &dims), porosity);
+    EXPECT_EQ(dims, (std::vector<hsize_t>{3}));
+    EXPECT_EQ(readDoubles(file, "/step_000000/solid/velocity", &dims),
+              (std::vector<double>{0, 0, -1, 0, 0, -2, 0, 0, -3}));
+    EXPECT_EQ(dims, (std::vector<hsize_t>{3, 3}));
+    EXPECT_EQ(readDoubles(file, "/step_000000/solid/state"), state);
+    EXPECT_EQ(readDoubleAttribute(file, "/step_000000", "time"), 0.25);
+    int dimension = 0;
+    const hid_t attribute = H5Aopen(file, "dimension", H5P_DEFAULT);
+    H5Aread(attribute, H5T_NATIVE_INT, &dimension);
+    H5Aclose(attribute);
+    EXPECT_EQ(dimension, 1);
+    H5Fclose(file);
+}
+
+TEST_F(FieldWriterTest, TwoDimensionalPointsKeepTheVerticalInZAndTensorsUnchanged) {
+    const std::vector<double> xz = {1.0, 10.0, 2.0, 20.0};
+    const std::vector<double> velocity = {0.5, -0.5, 0.25, -0.25};
+    const std::vector<double> stress = {1, 2, 3, 4, 5, 6, 11, 12, 13, 14, 15, 16};  // Voigt
+    {
+        qs::FieldWriter writer(dir_.string(), 2);
+        writer.beginStep(1.0);
+        writer.writePointSet("solid", 2, xz.data(),
+                             {{"velocity", velocity.data(), 2}, {"effective_stress", stress.data(), 6}});
+        writer.endStep();
+    }
+    const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    EXPECT_EQ(readDoubles(file, "/step_000000/solid/positions"), (std::vector<double>{1, 0, 10, 2, 0, 20}));
+    EXPECT_EQ(readDoubles(file, "/step_000000/solid/velocity"),
+              (std::vector<double>{0.5, 0, -0.5, 0.25, 0, -0.25}));
+    std::vector<hsize_t> dims;
+    EXPECT_EQ(readDoubles(file, "/step_000000/solid/effective_stress", &dims), stress);
+    EXPECT_EQ(dims, (std::vector<hsize_t>{2, 6}));
+    EXPECT_EQ(readStringAttribute(file, "/step_000000/solid/effective_stress", "components"), "xx yy zz yz xz xy");
+    H5Fclose(file);
+
+    const std::string xdmf = readText(dir_ / "fields.xdmf");
+    EXPECT_NE(xdmf.find("AttributeType=\"Tensor6\""), std::string::npos);
+    EXPECT_NE(xdmf.find("AttributeType=\"Vector\""), std::string::npos);
+    EXPECT_NE(xdmf.find("Dimensions=\"2 6\""), std::string::npos);
+}
+
+TEST_F(FieldWriterTest, ThreeDimensionalPositionsAreCopiedAsTheyAre) {
+    const std::vector<double> xyz = {1, 2, 3, 4, 5, 6};
+    {
+        qs::FieldWriter writer(dir_.string(), 3);
+        writer.beginStep(0.0);
+        writer.writePointSet("liquid", 2, xyz.data(), {{"velocity", xyz.data(), 3}});
+        writer.endStep();
+    }
+    const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    EXPECT_EQ(readDoubles(file, "/step_000000/liquid/positions"), xyz);
+    EXPECT_EQ(readDoubles(file, "/step_000000/liquid/velocity"), xyz);
+    H5Fclose(file);
+}
+
+TEST_F(FieldWriterTest, XdmfIndexesEveryStepAndDatasetAndIsValidAfterEachStep) {
+    const std::vector<double> z = {0.1, 0.2};
+    const std::vector<double> p = {1000.0, 2000.0};
+    qs::FieldWriter writer(dir_.string(), 1);
+    ASSERT_TRUE(fs::exists(dir_ / "fields.xdmf"));  // an empty but valid series from the start
+
+    writer.beginStep(0.0);
+    writer.writePointSet("solid", 2, z.data(), {{"porosity", p.data(), 1}});
+    writer.writePointSet("liquid", 2, z.data(), {{"pore_pressure", p.data(), 1}});
+    writer.endStep();
+    // Readable while the run goes on (a crash from here on loses nothing written so far).
+    std::string xdmf = readText(dir_ / "fields.xdmf");
+    EXPECT_NE(xdmf.find("fields.h5:/step_000000/liquid/pore_pressure"), std::string::npos);
+    EXPECT_EQ(occurrences(xdmf, "<Time "), 1);
+
+    writer.beginStep(0.5);
+    writer.writePointSet("solid", 2, z.data(), {{"porosity", p.data(), 1}});
+    writer.writePointSet("liquid", 2, z.data(), {{"pore_pressure", p.data(), 1}});
+    writer.endStep();
+    xdmf = readText(dir_ / "fields.xdmf");
+    EXPECT_NE(xdmf.find("CollectionType=\"Temporal\""), std::string::npos);
+    EXPECT_NE(xdmf.find("<Time Value=\"0.5\"/>"), std::string::npos);
+    EXPECT_NE(xdmf.find("TopologyType=\"Polyvertex\""), std::string::npos);
+    EXPECT_NE(xdmf.find("GeometryType=\"XYZ\""), std::string::npos);
+    for (const char* dataset : {"fields.h5:/step_000000/solid/positions", "fields.h5:/step_000000/solid/porosity",
+                                "fields.h5:/step_000001/solid/connectivity", "fields.h5:/step_000001/liquid/positions",
+                                "fields.h5:/step_000001/liquid/pore_pressure"})
+        EXPECT_NE(xdmf.find(dataset), std::string::npos) << dataset;
+    EXPECT_EQ(occurrences(xdmf, "<Grid "), occurrences(xdmf, "</Grid>"));
+    EXPECT_EQ(occurrences(xdmf, "<Grid Name=\"solid\""), 2);
+    EXPECT_FALSE(fs::exists(dir_ / "fields.xdmf.tmp"));
+}
+
+TEST_F(FieldWriterTest, EmptyPointSetHasEmptyDatasetsButNoXdmfGrid) {
+    const std::vector<double> z = {0.1};
+    {
+        qs::FieldWriter writer(dir_.string(), 1);
+        writer.beginStep(0.0);
+        writer.writePointSet("solid", 1, z.data(), {{"porosity", z.data(), 1}});
+        writer.writePointSet("liquid", 0, nullptr, {{"pore_pressure", nullptr, 1}});
+        writer.endStep();
+    }
+    const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    std::vector<hsize_t> dims;
+    EXPECT_TRUE(readDoubles(file, "/step_000000/liquid/pore_pressure", &dims).empty());
+    EXPECT_EQ(dims, (std::vector<hsize_t>{0}));
+    EXPECT_TRUE(readDoubles(file, "/step_000000/liquid/positions", &dims).empty());
+    EXPECT_EQ(dims, (std::vector<hsize_t>{0, 3}));
+    H5Fclose(file);
+    const std::string xdmf = readText(dir_ / "fields.xdmf");
+    EXPECT_EQ(xdmf.find("liquid"), std::string::npos);
+    EXPECT_NE(xdmf.find("<Grid Name=\"solid\""), std::string::npos);
+}
+
+TEST_F(FieldWriterTest, DestructorFinishesAnOpenStep) {
+    const std::vector<double> z = {0.1};
+    {
+        qs::FieldWriter writer(dir_.string(), 1);
+        writer.beginStep(2.0);
+        writer.writePointSet("solid", 1, z.data(), {});
+    }
+    EXPECT_NE(readText(dir_ / "fields.xdmf").find("fields.h5:/step_000000/solid/positions"), std::string::npos);
+}
+
+TEST_F(FieldWriterTest, ConstructorTruncatesAPreviousRun) {
+    const std::vector<double> z = {0.1};
+    for (int run = 0; run < 2; ++run) {
+        qs::FieldWriter writer(dir_.string(), 1);
+        writer.beginStep(run);
+        writer.writePointSet("solid", 1, z.data(), {});
+        writer.endStep();
+    }
+    const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    EXPECT_TRUE(exists(file, "/step_000000"));
+    EXPECT_FALSE(exists(file, "/step_000001"));
+    EXPECT_EQ(readDoubleAttribute(file, "/step_000000", "time"), 1.0);
+    H5Fclose(file);
+}
+
+TEST_F(FieldWriterTest, MisuseThrowsQsError) {
+    const std::vector<double> z = {0.1, 0.2};
+    EXPECT_THROW(qs::FieldWriter(dir_.string(), 4), qs::Error);
+    qs::FieldWriter writer(dir_.string(), 2);
+    EXPECT_THROW(writer.writePointSet("solid", 1, z.data(), {}), qs::Error);  // no step open
+    EXPECT_THROW(writer.endStep(), qs::Error);
+    writer.beginStep(0.0);
+    EXPECT_THROW(writer.beginStep(1.0), qs::Error);
+    EXPECT_THROW(writer.writePointSet("a/b", 1, z.data(), {}), qs::Error);
+    EXPECT_THROW(writer.writePointSet("solid", 1, z.data(), {{"v", z.data(), 1, qs::FieldKind::Vector}}),
+                 qs::Error);
+    EXPECT_THROW(writer.writePointSet("solid", 1, z.data(), {{"positions", z.data(), 1}}), qs::Error);
+    EXPECT_THROW(writer.writePointSet("solid", 1, z.data(), {{"p", z.data(), 1}, {"p", z.data(), 1}}), qs::Error);
+    EXPECT_THROW(writer.writePointSet("solid", 1, z.data(), {{"p", nullptr, 1}}), qs::Error);
+    writer.writePointSet("solid", 1, z.data(), {});
+    EXPECT_THROW(writer.writePointSet("solid", 1, z.data(), {}), qs::Error);  // twice in one step
+    writer.endStep();
+}
+
+TEST_F(FieldWriterTest, UncreatableFileThrowsNamingThePath) {
+    fs::create_directories(dir_);
+    std::ofstream(dir_ / "not_a_directory") << "x";
+    const std::string bad = (dir_ / "not_a_directory" / "out").string();
+    try {
+        qs::FieldWriter writer(bad, 1);
+        FAIL() << "expected qs::Error";
+    } catch (const qs::Error& e) {
+        EXPECT_NE(std::string(e.what()).find(bad), std::string::npos) << e.what();
+    }
+    // A directory where fields.h5 should be: HDF5 itself fails.
+    fs::create_directories(dir_ / "blocked" / "fields.h5");
+    try {
+        qs::FieldWriter writer((dir_ / "blocked").string(), 1);
+        FAIL() << "expected qs::Error";
+    } catch (const qs::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("fields.h5"), std::string::npos) << e.what();
+        EXPECT_NE(std::string(e.what()).find("create file"), std::string::npos) << e.what();
+    }
+}
