@@ -74,7 +74,8 @@ def plot_gate(ax, t, s):
     if "reservoir_head" in s:
         # A second axis: a head in m and a pressure in kPa share no scale.
         head_axis = ax.twinx() if "gate_pressure" in s else ax
-        drawn += head_axis.plot(t, s["reservoir_head"], color="tab:blue", label="reservoir head")
+        drawn += head_axis.plot(t, s["reservoir_head"], color="tab:blue", linestyle="--",
+                                label="reservoir head")
         head_axis.set_ylabel("reservoir head above gate (m)", color="tab:blue")
     if drawn:
         ax.legend(drawn, [line.get_label() for line in drawn], fontsize="small")

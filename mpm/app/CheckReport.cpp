@@ -72,8 +72,9 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         out << "  oedometric modulus E_oed                 " << Eoed << " Pa\n";
         out << "  wave speeds fast / slow / undrained      " << waves.fast << " / " << waves.slow << " / "
             << closed::undrainedWaveSpeed(Eoed, KL, n, m.grainDensity, rho) << " m/s\n";
+        // c_v = k/(gamma_w (m_v + n/K_L)) = (kappa/mu)/(m_v + n/K_L): independent of g
         out << "  consolidation coefficient c_v            "
-            << closed::consolidationCoefficient(K, rho, g, Eoed, n, KL) << " m2/s\n";
+            << (kappa / mu) / (1 / Eoed + n / KL) << " m2/s\n";
     }
     const double dtStable = config.time.courant * h / cMax;
     out << "time step: c_fast = " << cMax << " m/s, dt = courant h / c_fast = " << dtStable << " s ("

@@ -24,33 +24,34 @@ namespace {
 // order of docs/case-format.md. A reader asking for a key not listed here trips a debug assert.
 // ------------------------------------------------------------------------------------------------
 
-constexpr const char* kRootKeys[] = {"title",   "grid",      "column", "materials", "layers",
-                                     "liquid",  "points",    "gravity", "initial",  "loads",
-                                     "gate",    "reservoir", "time",    "monitors", "output"};
+constexpr const char* kRootKeys[] = {"title",  "grid",      "column",  "materials", "layers",
+                                     "liquid", "points",    "gravity", "initial",   "loads",
+                                     "gate",   "reservoir", "time",    "monitors",  "output"};
 constexpr const char* kGridKeys[] = {"dimension", "cell_size", "width", "cross_section_area",
                                      "shape_functions"};
 constexpr const char* kColumnKeys[] = {"chamber_height", "water_level", "overflow_level", "top"};
-constexpr const char* kMaterialKeys[] = {"model",           "grain_density",  "porosity",
-                                         "max_porosity",    "min_porosity",   "youngs_modulus",
-                                         "poisson_ratio",   "friction_angle", "dilatancy_angle",
-                                         "k0",              "ergun",          "ergun_a",
-                                         "ergun_b",         "permeability"};
+constexpr const char* kMaterialKeys[] = {
+    "model",          "grain_density", "porosity",       "max_porosity",    "min_porosity",
+    "youngs_modulus", "poisson_ratio", "friction_angle", "dilatancy_angle", "k0",
+    "ergun",          "ergun_a",       "ergun_b",        "permeability"};
 constexpr const char* kPermeabilityKeys[] = {"mode", "value", "grain_size"};
 constexpr const char* kLayerKeys[] = {"material", "thickness"};
-constexpr const char* kLiquidKeys[] = {"density",             "bulk_modulus",
-                                       "viscosity",           "cavitation_pressure",
-                                       "free_surface_zero_pressure", "free_surface_filling"};
+constexpr const char* kLiquidKeys[] = {"density",
+                                       "bulk_modulus",
+                                       "viscosity",
+                                       "cavitation_pressure",
+                                       "free_surface_zero_pressure",
+                                       "free_surface_filling"};
 constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
 constexpr const char* kInitialKeys[] = {"stress", "rigid_skeleton", "undrained_surcharge",
                                         "gravity_stage_duration", "gravity_stage_damping"};
 constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
 constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
-constexpr const char* kReservoirKeys[] = {"model",        "head",          "head_rate",
-                                          "area",         "tube_diameter", "tube_length",
-                                          "minor_loss",   "openfoam_case", "gate_patch",
-                                          "reservoir_patch"};
-constexpr const char* kTimeKeys[] = {"end",                 "courant",      "dt", "output_interval",
-                                     "checkpoint_interval", "sort_interval"};
+constexpr const char* kReservoirKeys[] = {
+    "model",       "head",       "head_rate",     "area",       "tube_diameter",
+    "tube_length", "minor_loss", "openfoam_case", "gate_patch", "reservoir_patch"};
+constexpr const char* kTimeKeys[] = {
+    "end", "courant", "dt", "output_interval", "checkpoint_interval", "sort_interval"};
 constexpr const char* kMonitorKeys[] = {"name", "elevation"};
 constexpr const char* kOutputKeys[] = {"directory", "fields", "progress_interval"};
 
@@ -85,9 +86,9 @@ const TableKeys kTime = tableKeys("[time]", kTimeKeys);
 const TableKeys kMonitor = tableKeys("[[monitors]]", kMonitorKeys);
 const TableKeys kOutput = tableKeys("[output]", kOutputKeys);
 
-const TableKeys* const kAllTables[] = {&kRoot,    &kGrid,  &kColumn,  &kMaterial, &kPermeability,
-                                       &kLayer,   &kLiquid, &kPoints, &kInitial,  &kLoads,
-                                       &kGate,    &kReservoir, &kTime, &kMonitor, &kOutput};
+const TableKeys* const kAllTables[] = {&kRoot,  &kGrid,      &kColumn, &kMaterial, &kPermeability,
+                                       &kLayer, &kLiquid,    &kPoints, &kInitial,  &kLoads,
+                                       &kGate,  &kReservoir, &kTime,   &kMonitor,  &kOutput};
 
 /// Largest intrinsic permeability accepted (m2). Clean gravel is ~1e-7 m2; larger values are
 /// almost always a hydraulic conductivity in m/s typed where kappa in m2 belongs.
@@ -135,7 +136,8 @@ std::size_t editDistance(std::string_view a0, std::string_view b0) {
 }
 
 /// The candidate nearest to `word`, if it is near enough to be a plausible typo.
-std::optional<std::string> nearest(std::string_view word, const std::vector<std::string>& candidates) {
+std::optional<std::string> nearest(std::string_view word,
+                                   const std::vector<std::string>& candidates) {
     std::optional<std::string> best;
     std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
     for (const std::string& c : candidates) {
@@ -159,15 +161,20 @@ std::string joinQuoted(const std::vector<std::string>& items) {
 /// "a string \"abc\"", "an integer 5", ...: how a value the user wrote is named in messages.
 std::string describe(const toml::node& node) {
     switch (node.type()) {
-    case toml::node_type::string: return "a string " + inQuotes(node.as_string()->get());
-    case toml::node_type::integer: return "an integer " + std::to_string(node.as_integer()->get());
-    case toml::node_type::floating_point:
-        return "a float " + number(node.as_floating_point()->get());
-    case toml::node_type::boolean:
-        return std::string("a boolean ") + (node.as_boolean()->get() ? "true" : "false");
-    case toml::node_type::table: return "a table";
-    case toml::node_type::array: return "an array";
-    default: return "a date/time value";
+        case toml::node_type::string:
+            return "a string " + inQuotes(node.as_string()->get());
+        case toml::node_type::integer:
+            return "an integer " + std::to_string(node.as_integer()->get());
+        case toml::node_type::floating_point:
+            return "a float " + number(node.as_floating_point()->get());
+        case toml::node_type::boolean:
+            return std::string("a boolean ") + (node.as_boolean()->get() ? "true" : "false");
+        case toml::node_type::table:
+            return "a table";
+        case toml::node_type::array:
+            return "an array";
+        default:
+            return "a date/time value";
     }
 }
 
@@ -190,16 +197,26 @@ struct Range {
         if (hasLo && hasHi)
             text = std::string("in ") + (loOpen ? "(" : "[") + number(lo) + ", " + number(hi) +
                    (hiOpen ? ")" : "]");
-        else if (hasLo) text = (loOpen ? "> " : ">= ") + number(lo);
-        else if (hasHi) text = (hiOpen ? "< " : "<= ") + number(hi);
-        else text = "any finite number";
+        else if (hasLo)
+            text = (loOpen ? "> " : ">= ") + number(lo);
+        else if (hasHi)
+            text = (hiOpen ? "< " : "<= ") + number(hi);
+        else
+            text = "any finite number";
         return text + (unit.empty() ? "" : " " + unit);
     }
 };
 
-Range positive(std::string unit) { return {0.0, std::numeric_limits<double>::infinity(), true, false, std::move(unit)}; }
-Range nonNegative(std::string unit) { return {0.0, std::numeric_limits<double>::infinity(), false, false, std::move(unit)}; }
-Range anyValue(std::string unit) { return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(), false, false, std::move(unit)}; }
+Range positive(std::string unit) {
+    return {0.0, std::numeric_limits<double>::infinity(), true, false, std::move(unit)};
+}
+Range nonNegative(std::string unit) {
+    return {0.0, std::numeric_limits<double>::infinity(), false, false, std::move(unit)};
+}
+Range anyValue(std::string unit) {
+    return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
+            false, false, std::move(unit)};
+}
 Range between(double lo, bool loOpen, double hi, bool hiOpen, std::string unit = "") {
     return {lo, hi, loOpen, hiOpen, std::move(unit)};
 }
@@ -212,8 +229,8 @@ class Section {
 public:
     /// `table` may be null (an optional table that is absent): every read then gives its default
     /// and a required key is reported missing at `fallbackLine`. Checks for unknown keys at once.
-    Section(const std::string& file, const toml::table* table, std::string path, const TableKeys& keys,
-            int fallbackLine)
+    Section(const std::string& file, const toml::table* table, std::string path,
+            const TableKeys& keys, int fallbackLine)
         : file_(file), table_(table), path_(std::move(path)), keys_(keys), line_(fallbackLine) {
         if (table_ && lineOfNode(*table_) > 0) line_ = lineOfNode(*table_);
         if (table_) checkKeys();
@@ -251,7 +268,8 @@ public:
     }
     /// A key that is valid in this table but has no meaning with the choices made elsewhere.
     void forbid(std::string_view key, const std::string& why) const {
-        if (has(key)) fail(key, "'" + std::string(key) + "' has no effect here: " + why + ". Remove it");
+        if (has(key))
+            fail(key, "'" + std::string(key) + "' has no effect here: " + why + ". Remove it");
     }
 
     std::optional<double> optionalNumber(std::string_view key, const Range& range,
@@ -259,10 +277,13 @@ public:
         const toml::node* node = find(key);
         if (!node) return std::nullopt;
         double v = 0.0;
-        if (const auto* i = node->as_integer()) v = static_cast<double>(i->get());
-        else if (const auto* f = node->as_floating_point()) v = f->get();
+        if (const auto* i = node->as_integer())
+            v = static_cast<double>(i->get());
+        else if (const auto* f = node->as_floating_point())
+            v = f->get();
         else {
-            std::string what = "expected a number (" + range.describe() + "), got " + describe(*node);
+            std::string what =
+                "expected a number (" + range.describe() + "), got " + describe(*node);
             if (const auto* s = node->as_string()) {
                 std::istringstream probe(s->get());
                 double x;
@@ -270,7 +291,8 @@ public:
             }
             fail(key, what);
         }
-        if (!std::isfinite(v)) fail(key, "expected a finite number (" + range.describe() + "), got " + number(v));
+        if (!std::isfinite(v))
+            fail(key, "expected a finite number (" + range.describe() + "), got " + number(v));
         if (!range.contains(v))
             fail(key, "value " + number(v) + (range.unit.empty() ? "" : " " + range.unit) +
                           " is out of range: expected a value " + range.describe() +
@@ -281,8 +303,10 @@ public:
                           const std::string& hint = "") const {
         return optionalNumber(key, range, hint).value_or(fallback);
     }
-    double requiredNumber(std::string_view key, const Range& range, const std::string& hint = "") const {
-        if (!has(key)) missing(key, "a number " + range.describe() + (hint.empty() ? "" : ", " + hint));
+    double requiredNumber(std::string_view key, const Range& range,
+                          const std::string& hint = "") const {
+        if (!has(key))
+            missing(key, "a number " + range.describe() + (hint.empty() ? "" : ", " + hint));
         return *optionalNumber(key, range, hint);
     }
 
@@ -296,7 +320,9 @@ public:
             v < std::numeric_limits<int>::min())
             fail(key, "value " + std::to_string(v) + " is out of range: expected an integer " +
                           range.describe() +
-                          (std::isfinite(range.hi) ? "" : " and <= " + std::to_string(std::numeric_limits<int>::max())));
+                          (std::isfinite(range.hi)
+                               ? ""
+                               : " and <= " + std::to_string(std::numeric_limits<int>::max())));
         return static_cast<int>(v);
     }
 
@@ -304,7 +330,8 @@ public:
         const toml::node* node = find(key);
         if (!node) return fallback;
         const auto* b = node->as_boolean();
-        if (!b) fail(key, "expected a boolean (true or false, without quotes), got " + describe(*node));
+        if (!b)
+            fail(key, "expected a boolean (true or false, without quotes), got " + describe(*node));
         return b->get();
     }
 
@@ -316,7 +343,8 @@ public:
         if (!allowEmpty && s->get().empty()) fail(key, "expected a non-empty string, got \"\"");
         return s->get();
     }
-    std::string string(std::string_view key, const std::string& fallback, bool allowEmpty = false) const {
+    std::string string(std::string_view key, const std::string& fallback,
+                       bool allowEmpty = false) const {
         return optionalString(key, allowEmpty).value_or(fallback);
     }
     std::string requiredString(std::string_view key, const std::string& expected) const {
@@ -332,7 +360,8 @@ public:
         return requiredChoice(key, options);
     }
     template <class E>
-    E requiredChoice(std::string_view key, const std::vector<std::pair<std::string, E>>& options) const {
+    E requiredChoice(std::string_view key,
+                     const std::vector<std::pair<std::string, E>>& options) const {
         std::vector<std::string> names;
         for (const auto& o : options) names.push_back(o.first);
         if (!has(key)) missing(key, "one of " + joinQuoted(names));
@@ -341,8 +370,10 @@ public:
         if (!s) fail(key, "expected one of " + joinQuoted(names) + ", got " + describe(*node));
         for (const auto& o : options)
             if (s->get() == o.first) return o.second;
-        std::string what = "unknown value " + inQuotes(s->get()) + "; allowed: " + joinQuoted(names);
-        if (auto guess = nearest(s->get(), names)) what += ". Did you mean " + inQuotes(*guess) + "?";
+        std::string what =
+            "unknown value " + inQuotes(s->get()) + "; allowed: " + joinQuoted(names);
+        if (auto guess = nearest(s->get(), names))
+            what += ". Did you mean " + inQuotes(*guess) + "?";
         fail(key, what);
     }
 
@@ -354,8 +385,7 @@ public:
             return Section(file_, nullptr, keyPath(key), keys, line_);
         }
         const toml::table* t = node->as_table();
-        if (!t)
-            fail(key, "expected a table [" + keyPath(key) + "], got " + describe(*node));
+        if (!t) fail(key, "expected a table [" + keyPath(key) + "], got " + describe(*node));
         return Section(file_, t, keyPath(key), keys, line_);
     }
 
@@ -369,8 +399,8 @@ public:
         }
         const toml::array* a = node->as_array();
         if (!a)
-            fail(key, "expected an array of tables, one [[" + std::string(key) + "]] header per entry, got " +
-                          describe(*node));
+            fail(key, "expected an array of tables, one [[" + std::string(key) +
+                          "]] header per entry, got " + describe(*node));
         for (std::size_t i = 0; i < a->size(); ++i) {
             const toml::node& item = *a->get(i);
             if (!item.is_table()) {
@@ -380,7 +410,8 @@ public:
                                      "]] header followed by its keys), got " + describe(item));
             }
         }
-        if (required && a->empty()) fail(key, "expected at least one [[" + std::string(key) + "]] entry, got none");
+        if (required && a->empty())
+            fail(key, "expected at least one [[" + std::string(key) + "]] entry, got none");
         return a;
     }
 
@@ -403,10 +434,12 @@ private:
                         break;
                     }
                 if (!elsewhere.empty())
-                    what += " '" + std::string(key) + "' belongs in " + elsewhere +
-                            (elsewhere == "the top level"
-                                 ? " (before the first [table] header: a key after a header belongs to that table)"
-                                 : "") + ".";
+                    what +=
+                        " '" + std::string(key) + "' belongs in " + elsewhere +
+                        (elsewhere == "the top level" ? " (before the first [table] header: a key "
+                                                        "after a header belongs to that table)"
+                                                      : "") +
+                        ".";
                 what += " Allowed keys: " + joinQuoted(candidates) + ".";
             }
             const int line = lineOfNode(node) > 0 ? lineOfNode(node) : line_;
@@ -430,13 +463,15 @@ using Options = std::vector<std::pair<std::string, E>>;
 
 const Options<ShapeFunctionKind> kShapeFunctionOptions = {{"linear", ShapeFunctionKind::Linear},
                                                           {"gimp", ShapeFunctionKind::Gimp}};
-const Options<ConstitutiveModel> kModelOptions = {{"linear_elastic", ConstitutiveModel::LinearElastic},
-                                                  {"mohr_coulomb", ConstitutiveModel::MohrCoulomb}};
+const Options<ConstitutiveModel> kModelOptions = {
+    {"linear_elastic", ConstitutiveModel::LinearElastic},
+    {"mohr_coulomb", ConstitutiveModel::MohrCoulomb}};
 const Options<PermeabilityMode> kPermeabilityOptions = {
     {"constant", PermeabilityMode::Constant},
     {"kozeny_carman", PermeabilityMode::KozenyCarman},
     {"kozeny_carman_scaled", PermeabilityMode::KozenyCarmanScaled}};
-const Options<InitialStress> kStressOptions = {{"k0", InitialStress::K0}, {"zero", InitialStress::Zero}};
+const Options<InitialStress> kStressOptions = {{"k0", InitialStress::K0},
+                                               {"zero", InitialStress::Zero}};
 const Options<GateMode> kGateOptions = {
     {"pressure", GateMode::Pressure}, {"flux", GateMode::Flux}, {"closed", GateMode::Closed}};
 const Options<ReservoirKind> kReservoirOptions = {{"constant_head", ReservoirKind::ConstantHead},
@@ -514,9 +549,10 @@ private:
         } else {
             g.width = s.optionalNumber("width", 0.0, positive("m"), "ignored in 1D");
         }
-        g.crossSectionArea = s.requiredNumber("cross_section_area", positive("m2"),
-                                              "cross-section of the column");
-        g.shapeFunctions = s.choice("shape_functions", ShapeFunctionKind::Linear, kShapeFunctionOptions);
+        g.crossSectionArea =
+            s.requiredNumber("cross_section_area", positive("m2"), "cross-section of the column");
+        g.shapeFunctions =
+            s.choice("shape_functions", ShapeFunctionKind::Linear, kShapeFunctionOptions);
     }
 
     void readLiquid(const Section& root) {
@@ -527,41 +563,46 @@ private:
         l.viscosity = s.optionalNumber("viscosity", 8.91e-4, positive("Pa s"));
         if (l.viscosity < kMinViscosity)
             s.fail("viscosity",
-                   "value " + number(l.viscosity) + " Pa s is implausibly small (expected >= " +
-                       number(kMinViscosity) + " Pa s; water at 20 C: 1.0e-3 Pa s). The unit is Pa s, "
+                   "value " + number(l.viscosity) +
+                       " Pa s is implausibly small (expected >= " + number(kMinViscosity) +
+                       " Pa s; water at 20 C: 1.0e-3 Pa s). The unit is Pa s, "
                        "not kPa s as in Anura3D tables: 8.91e-7 kPa s = 8.91e-4 Pa s");
         l.cavitationPressure = s.optionalNumber(
             "cavitation_pressure", 0.0,
             between(-std::numeric_limits<double>::infinity(), false, 0.0, false, "Pa"),
             "a gauge pressure: 0 or a suction");
         l.freeSurfaceZeroPressure = s.boolean("free_surface_zero_pressure", false);
-        l.freeSurfaceFilling = s.optionalNumber("free_surface_filling", 0.9, between(0, true, 1, false));
+        l.freeSurfaceFilling =
+            s.optionalNumber("free_surface_filling", 0.9, between(0, true, 1, false));
     }
 
     void readMaterials(const Section& root) {
         const toml::node* node = root.find("materials");
         if (!node)
-            root.fail("materials", "missing required table [materials]: define at least one "
-                                   "material as a [materials.NAME] table");
+            root.fail("materials",
+                      "missing required table [materials]: define at least one "
+                      "material as a [materials.NAME] table");
         const toml::table* table = node->as_table();
         if (!table)
-            root.fail("materials", "expected a table of materials, one [materials.NAME] header each, got " +
-                                       describe(*node));
+            root.fail("materials",
+                      "expected a table of materials, one [materials.NAME] header each, got " +
+                          describe(*node));
         if (table->empty())
             root.fail("materials", "no material defined: add at least one [materials.NAME] table");
         std::vector<std::pair<std::string, const toml::node*>> entries;
-        for (const auto& [key, value] : *table) entries.emplace_back(std::string(key.str()), &value);
+        for (const auto& [key, value] : *table)
+            entries.emplace_back(std::string(key.str()), &value);
         std::stable_sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) {
             return lineOfNode(*a.second) < lineOfNode(*b.second);
         });
         for (const auto& [name, value] : entries) {
             const std::string path = "materials." + name;
             if (!value->is_table())
-                throw InputError(file_, lineOfNode(*value) > 0 ? lineOfNode(*value) : root.lineOf("materials"),
-                                 path,
-                                 "expected a table [" + path + "] describing a material, got " +
-                                     describe(*value) +
-                                     "; material keys go under a [materials.NAME] header");
+                throw InputError(
+                    file_, lineOfNode(*value) > 0 ? lineOfNode(*value) : root.lineOf("materials"),
+                    path,
+                    "expected a table [" + path + "] describing a material, got " +
+                        describe(*value) + "; material keys go under a [materials.NAME] header");
             const Section s(file_, value->as_table(), path, kMaterial, root.lineOf("materials"));
             c_.materials.push_back(readMaterial(s, name));
         }
@@ -587,13 +628,14 @@ private:
         if (m.minPorosity > m.porosity) {
             const bool given = s.has("min_porosity");
             s.fail(given ? "min_porosity" : "porosity",
-                   "n_min = " + number(m.minPorosity) + (given ? "" : " (the default)") + " > n0 = " +
-                       number(m.porosity) +
+                   "n_min = " + number(m.minPorosity) + (given ? "" : " (the default)") +
+                       " > n0 = " + number(m.porosity) +
                        ": min_porosity must be in (0, porosity]; set min_porosity <= porosity");
         }
         m.youngsModulus = s.optionalNumber("youngs_modulus", 1e6, positive("Pa"));
         m.poissonRatio = s.optionalNumber("poisson_ratio", 0.3, between(0, false, 0.5, true));
-        m.frictionAngle = s.optionalNumber("friction_angle", 30.0, between(0, false, 90, true, "deg"));
+        m.frictionAngle =
+            s.optionalNumber("friction_angle", 30.0, between(0, false, 90, true, "deg"));
         m.dilatancyAngle = s.optionalNumber("dilatancy_angle", 0.0,
                                             between(0, false, m.frictionAngle, false, "deg"),
                                             "at most friction_angle");
@@ -609,8 +651,9 @@ private:
         PermeabilityConfig p;
         p.mode = s.requiredChoice("mode", kPermeabilityOptions);
         if (p.mode == PermeabilityMode::KozenyCarman) {
-            s.forbid("value", "mode = \"kozeny_carman\" computes kappa from grain_size (to scale a "
-                              "given kappa with porosity use mode = \"kozeny_carman_scaled\")");
+            s.forbid("value",
+                     "mode = \"kozeny_carman\" computes kappa from grain_size (to scale a "
+                     "given kappa with porosity use mode = \"kozeny_carman_scaled\")");
             p.grainSize = s.requiredNumber("grain_size", positive("m"),
                                            "grain size D in m, e.g. D10 = 0.261 mm = 2.61e-4 m");
             return p;
@@ -623,12 +666,15 @@ private:
             const double g = c_.gravity > 0.0 ? c_.gravity : 9.81;
             const double kappa = p.value * l.viscosity / (l.density * g);
             s.fail("value",
-                   "value " + number(p.value) + " is far too large for an intrinsic permeability in m2 "
-                   "(expected > 0 and <= " + number(kMaxPermeability) + " m2; clean gravel is about "
-                   "1e-7 m2). It looks like a hydraulic conductivity K in m/s. The intrinsic "
-                   "permeability is kappa = K mu / (rho_L g): here " + number(p.value) + " * " +
-                   number(l.viscosity) + " / (" + number(l.density) + " * " + number(g) + ") = " +
-                   number(kappa, 4) + " m2. Give kappa in m2");
+                   "value " + number(p.value) +
+                       " is far too large for an intrinsic permeability in m2 "
+                       "(expected > 0 and <= " +
+                       number(kMaxPermeability) +
+                       " m2; clean gravel is about "
+                       "1e-7 m2). It looks like a hydraulic conductivity K in m/s. The intrinsic "
+                       "permeability is kappa = K mu / (rho_L g): here " +
+                       number(p.value) + " * " + number(l.viscosity) + " / (" + number(l.density) +
+                       " * " + number(g) + ") = " + number(kappa, 4) + " m2. Give kappa in m2");
         }
         return p;
     }
@@ -645,7 +691,8 @@ private:
             if (std::find(names.begin(), names.end(), layer.material) == names.end()) {
                 std::string what = "no material named " + inQuotes(layer.material) +
                                    " in [materials]; defined: " + joinQuoted(names);
-                if (auto guess = nearest(layer.material, names)) what += ". Did you mean " + inQuotes(*guess) + "?";
+                if (auto guess = nearest(layer.material, names))
+                    what += ". Did you mean " + inQuotes(*guess) + "?";
                 s.fail("material", what);
             }
             layer.thickness = s.requiredNumber("thickness", positive("m"));
@@ -670,26 +717,31 @@ private:
         const double sandTop = c_.sandTop();
         const std::string sandTopText = "the sand top at " + number(sandTop) +
                                         " m (chamber_height " + number(col.chamberHeight) +
-                                        " m + layers " + number(sandTop - col.chamberHeight) + " m)";
+                                        " m + layers " + number(sandTop - col.chamberHeight) +
+                                        " m)";
         col.waterLevel = s.optionalNumber("water_level", sandTop, anyValue("m"));
         if (!atLeast(col.waterLevel, sandTop))
-            s.fail("water_level", "water_level = " + number(col.waterLevel) + " m is below " +
-                                      sandTopText +
-                                      "; the bed must start submerged: use water_level >= " +
-                                      number(sandTop) + " m, or omit it (default: the sand top)");
+            s.fail("water_level",
+                   "water_level = " + number(col.waterLevel) + " m is below " + sandTopText +
+                       "; the bed must start submerged: use water_level >= " + number(sandTop) +
+                       " m, or omit it (default: the sand top)");
         col.overflowLevel = s.optionalNumber("overflow_level", anyValue("m"));
         if (col.overflowLevel && !atLeast(*col.overflowLevel, col.waterLevel))
             s.fail("overflow_level", "overflow_level = " + number(*col.overflowLevel) +
                                          " m is below water_level = " + number(col.waterLevel) +
-                                         " m" + (s.has("water_level") ? "" : " (the default: sand top)") +
+                                         " m" +
+                                         (s.has("water_level") ? "" : " (the default: sand top)") +
                                          "; expected overflow_level >= water_level");
-        col.top = s.requiredNumber("top", positive("m"), "top of the grid, above water and overflow levels");
+        col.top = s.requiredNumber("top", positive("m"),
+                                   "top of the grid, above water and overflow levels");
         if (!above(col.top, col.waterLevel))
-            s.fail("top", "top = " + number(col.top) + " m is not above water_level = " +
-                              number(col.waterLevel) + " m; the grid must reach above the free surface");
+            s.fail("top", "top = " + number(col.top) +
+                              " m is not above water_level = " + number(col.waterLevel) +
+                              " m; the grid must reach above the free surface");
         if (col.overflowLevel && !above(col.top, *col.overflowLevel))
-            s.fail("top", "top = " + number(col.top) + " m is not above overflow_level = " +
-                              number(*col.overflowLevel) + " m; the grid must reach above the overflow");
+            s.fail("top", "top = " + number(col.top) +
+                              " m is not above overflow_level = " + number(*col.overflowLevel) +
+                              " m; the grid must reach above the overflow");
         requireWholeCells(s, "top", col.top, h);
     }
 
@@ -712,11 +764,14 @@ private:
         i.rigidSkeleton = s.boolean("rigid_skeleton", false);
         i.undrainedSurcharge = s.boolean("undrained_surcharge", false);
         if (i.undrainedSurcharge && !(c_.loads.surcharge > 0.0))
-            s.fail("undrained_surcharge", "undrained_surcharge = true needs a surcharge, but "
-                                          "loads.surcharge is " + number(c_.loads.surcharge) +
-                                          " Pa; set loads.surcharge > 0 or remove this key");
+            s.fail("undrained_surcharge",
+                   "undrained_surcharge = true needs a surcharge, but "
+                   "loads.surcharge is " +
+                       number(c_.loads.surcharge) +
+                       " Pa; set loads.surcharge > 0 or remove this key");
         i.gravityStageDuration = s.optionalNumber("gravity_stage_duration", 0.0, nonNegative("s"));
-        i.gravityStageDamping = s.optionalNumber("gravity_stage_damping", 0.05, between(0, false, 1, true));
+        i.gravityStageDamping =
+            s.optionalNumber("gravity_stage_damping", 0.05, between(0, false, 1, true));
     }
 
     void readGate(const Section& root) {
@@ -724,8 +779,9 @@ private:
         GateConfig& g = c_.gate;
         g.mode = s.choice("mode", GateMode::Pressure, kGateOptions);
         if (g.mode == GateMode::Flux) {
-            g.flux = s.requiredNumber("flux", anyValue("m/s"),
-                                      "liquid velocity at the gate, positive upward into the column");
+            g.flux =
+                s.requiredNumber("flux", anyValue("m/s"),
+                                 "liquid velocity at the gate, positive upward into the column");
             g.fluxRampTime = s.optionalNumber("flux_ramp_time", 0.0, nonNegative("s"));
         } else {
             const std::string why = "it is used only with mode = \"flux\" (mode is " +
@@ -738,62 +794,73 @@ private:
     void readReservoir(const Section& root) {
         const bool pressureGate = c_.gate.mode == GateMode::Pressure;
         if (pressureGate && !root.has("reservoir"))
-            root.fail("reservoir", "missing required table [reservoir]: with gate.mode = \"pressure\" "
-                                   "(the default) the reservoir sets the gate pressure; give at "
-                                   "least reservoir.head");
+            root.fail("reservoir",
+                      "missing required table [reservoir]: with gate.mode = \"pressure\" "
+                      "(the default) the reservoir sets the gate pressure; give at "
+                      "least reservoir.head");
         const Section s = root.subsection("reservoir", kReservoir, false);
         ReservoirConfig& r = c_.reservoir;
         r.kind = s.choice("model", ReservoirKind::ConstantHead, kReservoirOptions);
-        const std::string notHere = "it does not apply to model = " + nameOf(kReservoirOptions, r.kind);
+        const std::string notHere =
+            "it does not apply to model = " + nameOf(kReservoirOptions, r.kind);
         const Range head = nonNegative("m");
-        const std::string headHint = "elevation of the reservoir surface above the gate plane z = 0";
+        const std::string headHint =
+            "elevation of the reservoir surface above the gate plane z = 0";
         auto readHead = [&] {
             // A flux or closed gate does not use the reservoir: its head may then be left out.
             r.head = pressureGate ? s.requiredNumber("head", head, headHint)
                                   : s.optionalNumber("head", 0.0, head, headHint);
         };
         switch (r.kind) {
-        case ReservoirKind::ConstantHead:
-            for (const char* key : {"area", "tube_diameter", "tube_length", "minor_loss",
-                                    "openfoam_case", "gate_patch", "reservoir_patch"})
-                s.forbid(key, notHere);
-            readHead();
-            r.headRate = s.optionalNumber("head_rate", 0.0, anyValue("m/s"));
-            break;
-        case ReservoirKind::Lumped:
-            for (const char* key : {"head_rate", "openfoam_case", "gate_patch", "reservoir_patch"})
-                s.forbid(key, notHere);
-            readHead();
-            r.area = s.requiredNumber("area", positive("m2"), "plan area of the reservoir");
-            r.tubeDiameter = s.optionalNumber("tube_diameter", 0.0, nonNegative("m"), "0: no tube");
-            if (r.tubeDiameter > 0.0) {
-                r.tubeLength = s.requiredNumber("tube_length", positive("m"),
-                                                "length of the U-tube, required with tube_diameter > 0");
-                r.minorLoss = s.optionalNumber("minor_loss", 0.0, nonNegative(""));
-            } else {
-                s.forbid("tube_length", "there is no tube (tube_diameter = 0; give tube_diameter > 0 for one)");
-                s.forbid("minor_loss", "minor losses act in the tube and there is none "
-                                       "(tube_diameter = 0; give tube_diameter > 0 for one)");
+            case ReservoirKind::ConstantHead:
+                for (const char* key : {"area", "tube_diameter", "tube_length", "minor_loss",
+                                        "openfoam_case", "gate_patch", "reservoir_patch"})
+                    s.forbid(key, notHere);
+                readHead();
+                r.headRate = s.optionalNumber("head_rate", 0.0, anyValue("m/s"));
+                break;
+            case ReservoirKind::Lumped:
+                for (const char* key :
+                     {"head_rate", "openfoam_case", "gate_patch", "reservoir_patch"})
+                    s.forbid(key, notHere);
+                readHead();
+                r.area = s.requiredNumber("area", positive("m2"), "plan area of the reservoir");
+                r.tubeDiameter =
+                    s.optionalNumber("tube_diameter", 0.0, nonNegative("m"), "0: no tube");
+                if (r.tubeDiameter > 0.0) {
+                    r.tubeLength =
+                        s.requiredNumber("tube_length", positive("m"),
+                                         "length of the U-tube, required with tube_diameter > 0");
+                    r.minorLoss = s.optionalNumber("minor_loss", 0.0, nonNegative(""));
+                } else {
+                    s.forbid(
+                        "tube_length",
+                        "there is no tube (tube_diameter = 0; give tube_diameter > 0 for one)");
+                    s.forbid("minor_loss",
+                             "minor losses act in the tube and there is none "
+                             "(tube_diameter = 0; give tube_diameter > 0 for one)");
+                }
+                break;
+            case ReservoirKind::OpenFoam: {
+                for (const char* key :
+                     {"head", "head_rate", "area", "tube_diameter", "tube_length", "minor_loss"})
+                    s.forbid(key, notHere + " (the OpenFOAM case holds the reservoir)");
+                const std::string given = s.requiredString(
+                    "openfoam_case",
+                    "the path of the OpenFOAM case directory, relative to the case directory");
+                std::filesystem::path path(given);
+                if (path.is_relative()) path = std::filesystem::path(caseDirectory_) / path;
+                path = std::filesystem::absolute(path).lexically_normal();
+                if (!std::filesystem::is_directory(path))
+                    s.fail("openfoam_case", "OpenFOAM case directory " + inQuotes(path.string()) +
+                                                " does not exist (" + inQuotes(given) +
+                                                " is read relative to the case directory " +
+                                                inQuotes(caseDirectory_) + ")");
+                r.openfoamCase = path.string();
+                r.gatePatch = s.string("gate_patch", "gate");
+                r.reservoirPatch = s.string("reservoir_patch", "reservoir");
+                break;
             }
-            break;
-        case ReservoirKind::OpenFoam: {
-            for (const char* key : {"head", "head_rate", "area", "tube_diameter", "tube_length", "minor_loss"})
-                s.forbid(key, notHere + " (the OpenFOAM case holds the reservoir)");
-            const std::string given = s.requiredString(
-                "openfoam_case", "the path of the OpenFOAM case directory, relative to the case directory");
-            std::filesystem::path path(given);
-            if (path.is_relative()) path = std::filesystem::path(caseDirectory_) / path;
-            path = std::filesystem::absolute(path).lexically_normal();
-            if (!std::filesystem::is_directory(path))
-                s.fail("openfoam_case", "OpenFOAM case directory " + inQuotes(path.string()) +
-                                            " does not exist (" + inQuotes(given) +
-                                            " is read relative to the case directory " +
-                                            inQuotes(caseDirectory_) + ")");
-            r.openfoamCase = path.string();
-            r.gatePatch = s.string("gate_patch", "gate");
-            r.reservoirPatch = s.string("reservoir_patch", "reservoir");
-            break;
-        }
         }
     }
 
@@ -804,9 +871,10 @@ private:
         t.courant = s.optionalNumber("courant", 0.4, between(0, true, 0.5, false));
         t.dt = s.optionalNumber("dt", positive("s"));
         t.outputInterval = s.optionalNumber("output_interval", t.end / 100.0, positive("s"));
-        t.checkpointInterval = s.optionalNumber("checkpoint_interval", 0.0, nonNegative("s"), "0: only at the end");
-        t.sortInterval = s.integer("sort_interval", 1,
-                                   between(1, false, std::numeric_limits<double>::infinity(), false));
+        t.checkpointInterval =
+            s.optionalNumber("checkpoint_interval", 0.0, nonNegative("s"), "0: only at the end");
+        t.sortInterval = s.integer(
+            "sort_interval", 1, between(1, false, std::numeric_limits<double>::infinity(), false));
     }
 
     void readMonitors(const Section& root) {
@@ -814,17 +882,20 @@ private:
         if (!monitors) return;
         std::vector<int> lines;
         for (std::size_t i = 0; i < monitors->size(); ++i) {
-            const Section s(file_, monitors->get(i)->as_table(), "monitors[" + std::to_string(i) + "]",
-                            kMonitor, root.lineOf("monitors"));
+            const Section s(file_, monitors->get(i)->as_table(),
+                            "monitors[" + std::to_string(i) + "]", kMonitor,
+                            root.lineOf("monitors"));
             MonitorConfig m;
             m.name = s.requiredString("name", "a unique name for the monitor");
             for (std::size_t j = 0; j < c_.monitors.size(); ++j)
                 if (c_.monitors[j].name == m.name)
-                    s.fail("name", "monitor name " + inQuotes(m.name) + " is already used by monitors[" +
-                                       std::to_string(j) + "] (line " + std::to_string(lines[j]) +
+                    s.fail("name", "monitor name " + inQuotes(m.name) +
+                                       " is already used by monitors[" + std::to_string(j) +
+                                       "] (line " + std::to_string(lines[j]) +
                                        "); monitor names must be unique");
-            m.elevation = s.requiredNumber("elevation", between(0, false, c_.column.top, false, "m"),
-                                           "within the grid, from the gate (0) to column.top");
+            m.elevation =
+                s.requiredNumber("elevation", between(0, false, c_.column.top, false, "m"),
+                                 "within the grid, from the gate (0) to column.top");
             c_.monitors.push_back(m);
             lines.push_back(s.line());
         }
@@ -868,10 +939,11 @@ CaseConfig loadCase(const std::string& caseDirectory) {
     const std::filesystem::path file = std::filesystem::path(caseDirectory) / "case.toml";
     std::ifstream in(file, std::ios::binary);
     if (!in) {
-        const std::string why = std::filesystem::is_directory(caseDirectory)
-                                    ? "cannot read the case file (a case directory must hold case.toml)"
-                                    : "cannot read the case file: case directory " +
-                                          inQuotes(caseDirectory) + " does not exist";
+        const std::string why =
+            std::filesystem::is_directory(caseDirectory)
+                ? "cannot read the case file (a case directory must hold case.toml)"
+                : "cannot read the case file: case directory " + inQuotes(caseDirectory) +
+                      " does not exist";
         throw InputError(file.string(), 0, "", why);
     }
     std::ostringstream text;

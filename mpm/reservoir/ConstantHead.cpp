@@ -6,8 +6,9 @@ namespace qs {
 
 ConstantHead::ConstantHead(double liquidDensity, double gravity, double head, double headRate)
     : rhoG_(liquidDensity * gravity), head0_(head), headRate_(headRate) {
-    QS_CHECK(liquidDensity > 0.0 && gravity > 0.0,
-             "constant-head reservoir: liquid density and gravity must be > 0, got "
+    // gravity may be 0 (a weightless column, e.g. consolidation): the gate pressure is then 0
+    QS_CHECK(liquidDensity > 0.0 && gravity >= 0.0,
+             "constant-head reservoir: liquid density must be > 0 and gravity >= 0, got "
                  << liquidDensity << " kg/m3 and " << gravity << " m/s2");
 }
 

@@ -4,6 +4,7 @@
 
 #include "core/Error.hpp"
 #include "materials/StressTensor.hpp"
+#include "physics/ClosedForms.hpp"
 #include "solver/DoublePointSolver.hpp"
 
 namespace qs {
@@ -130,17 +131,24 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
         });
     }
 
-    // Free water: the chamber below the filter and the water above the sand.
+    // Free water: the chamber below the filter and the water above the sand. In an undrained
+    // start the closed chamber shares the sand's excess pressure (it drains only upwards).
+    Real chamberExcess = 0;
+    if (config.initial.undrainedSurcharge) {
+        const auto& m = config.material(config.layers.front().material);
+        const Real mv = 1 / closed::oedometricModulus(m.youngsModulus, m.poissonRatio);
+        chamberExcess = config.loads.surcharge * mv / (mv + m.porosity / config.liquid.bulkModulus);
+    }
     const int nzFree = freeWaterPointsPerCell(config);
-    auto freeWater = [&](Real z0, Real z1) {
+    auto freeWater = [&](Real z0, Real z1, Real excess) {
         const Index nz = std::llround((z1 - z0) / h * nzFree);
         if (nz <= 0) return;
         forEachLatticePoint(grid, lpc, z0, z1, nz, [&](const Vec<D>& x, Real V) {
-            appendLiquid(liquid, x, V, rhoL * V, hydrostatic(x[D - 1]));
+            appendLiquid(liquid, x, V, rhoL * V, hydrostatic(x[D - 1]) + excess);
         });
     };
-    freeWater(0.0, config.filterLevel());
-    if (zWater > config.sandTop() + 1e-12) freeWater(config.sandTop(), zWater);
+    freeWater(0.0, config.filterLevel(), chamberExcess);
+    if (zWater > config.sandTop() + 1e-12) freeWater(config.sandTop(), zWater, 0.0);
 }
 
 template void buildColumn<1>(const CaseConfig&, const Grid<1>&, const std::vector<SolidMaterial>&,

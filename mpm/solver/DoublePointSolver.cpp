@@ -824,6 +824,7 @@ ColumnState DoublePointSolver<D>::columnState() const {
     }
     s.cumulativeInflow = cumulativeInflow_;
     s.cumulativeOutflow = outflowVolume_;
+    s.injectedVolume = injectedVolume_;
     for (Real m : solid_.mass) s.solidMass += m;
     for (Real m : liquid_.mass) s.liquidMass += m;
     Real gapVolume = 0;

@@ -54,6 +54,7 @@ struct ColumnState {
     std::vector<Real> monitorFlux;  ///< m/s, filter velocity q = n (v_L - v_S) per monitor
     Real cumulativeInflow = 0;    ///< m3 through the gate (grid flux integrated in time)
     Real cumulativeOutflow = 0;   ///< m3 removed above the overflow level
+    Real injectedVolume = 0;      ///< m3 of liquid points injected at the chamber bottom
     Real ledgerResidual = 0;      ///< m3, inflow - outflow - stored (should stay ~0)
     Real solidMass = 0;           ///< kg
     Real liquidMass = 0;          ///< kg

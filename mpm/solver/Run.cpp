@@ -21,7 +21,7 @@ std::vector<std::string> seriesColumns(const CaseConfig& config) {
     std::vector<std::string> c = {"time", "gate_flux", "gate_pressure", "reservoir_head",
                                   "sand_surface", "water_surface", "gradient"};
     for (const auto& m : config.monitors) c.push_back("q_" + m.name);
-    for (const char* k : {"cumulative_inflow", "cumulative_outflow", "ledger_residual",
+    for (const char* k : {"cumulative_inflow", "cumulative_outflow", "injected_volume", "ledger_residual",
                           "solid_mass", "liquid_mass", "solid_points", "liquid_points"})
         c.push_back(k);
     return c;
@@ -33,7 +33,7 @@ std::vector<double> seriesRow(const ColumnState& s) {
     std::vector<double> r = {s.time, s.gateFlux, s.gatePressure, s.reservoirHead, s.sandSurface,
                              s.waterSurface, s.gradient};
     for (Real q : s.monitorFlux) r.push_back(q);
-    for (double v : {s.cumulativeInflow, s.cumulativeOutflow, s.ledgerResidual, s.solidMass,
+    for (double v : {s.cumulativeInflow, s.cumulativeOutflow, s.injectedVolume, s.ledgerResidual, s.solidMass,
                      s.liquidMass, double(s.solidPoints), double(s.liquidPoints)})
         r.push_back(v);
     return r;
@@ -115,7 +115,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
         if (series) series->write(seriesRow(s));
         if (fields) writeFields(*fields, solver);
         reservoir->writeOutput(s.time);
-        if (options.onOutput) options.onOutput(s);
+        if (options.onOutput) options.onOutput(s, solver.profile());
     };
     auto checkpoint = [&]() {
         if (!options.writeFiles) return;

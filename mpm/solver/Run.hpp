@@ -21,8 +21,9 @@ struct RunOptions {
     bool quiet = false;           ///< no progress lines
     bool writeFiles = true;       ///< false: run in memory only (tests)
     double endTime = -1;          ///< s, overrides time.end when >= 0
-    /// Called after every step with the solver's state (tests watch a run through it).
-    std::function<void(const ColumnState&)> onOutput;
+    /// Called at every output time with the column's state and cell-row profile (tests watch a
+    /// run through it).
+    std::function<void(const ColumnState&, const std::vector<CellRow>&)> onOutput;
 };
 
 struct RunSummary {

@@ -65,7 +65,9 @@ std::string expectError(const std::string& text, const std::string& key, int lin
         const std::string what = e.what();
         EXPECT_EQ(e.key(), key) << what;
         EXPECT_EQ(e.line(), line) << what;
-        EXPECT_NE(what.find(std::string(kFile) + ":" + std::to_string(line) + ":"), std::string::npos) << what;
+        EXPECT_NE(what.find(std::string(kFile) + ":" + std::to_string(line) + ":"),
+                  std::string::npos)
+            << what;
         EXPECT_NE(what.find("'" + key + "'"), std::string::npos) << what;
         return what;
     }
@@ -320,7 +322,8 @@ TEST(CaseLoader, WrongTypeIsRejected) {
     const std::string boolText = replaced(kMinimal, "[time]\n", "[time]\nsort_interval = true\n");
     expectError(boolText, "time.sort_interval", lineOf(boolText, "sort_interval"));
 
-    const std::string tableText = replaced(kMinimal, "title = \"minimal\"", "title = \"m\"\nliquid = 3");
+    const std::string tableText =
+        replaced(kMinimal, "title = \"minimal\"", "title = \"m\"\nliquid = 3");
     const std::string tableWhat = expectError(tableText, "liquid", 2);
     EXPECT_TRUE(contains(tableWhat, "expected a table")) << tableWhat;
 }
@@ -343,17 +346,19 @@ TEST(CaseLoader, OutOfRangeValueNamesTheValueAndTheRange) {
     EXPECT_TRUE(contains(what, "-0.01")) << what;
     EXPECT_TRUE(contains(what, "> 0 m")) << what;
 
-    const std::string points = replaced(kMinimal, "[time]\n", "[points]\nsolid_per_cell = 9\n[time]\n");
+    const std::string points =
+        replaced(kMinimal, "[time]\n", "[points]\nsolid_per_cell = 9\n[time]\n");
     expectError(points, "points.solid_per_cell", lineOf(points, "solid_per_cell"));
     const std::string courant = replaced(kMinimal, "end = 1.0", "end = 1.0\ncourant = 0.6");
     expectError(courant, "time.courant", lineOf(courant, "courant"));
     const std::string poisson =
         replaced(kMinimal, "porosity = 0.38", "porosity = 0.38\npoisson_ratio = 0.5");
     expectError(poisson, "materials.sand.poisson_ratio", lineOf(poisson, "poisson_ratio"));
-    const std::string dilatancy =
-        replaced(kMinimal, "porosity = 0.38", "porosity = 0.38\nfriction_angle = 30\ndilatancy_angle = 35");
+    const std::string dilatancy = replaced(
+        kMinimal, "porosity = 0.38", "porosity = 0.38\nfriction_angle = 30\ndilatancy_angle = 35");
     expectError(dilatancy, "materials.sand.dilatancy_angle", lineOf(dilatancy, "dilatancy_angle"));
-    const std::string gravity = replaced(kMinimal, "title = \"minimal\"", "title = \"m\"\ngravity = -9.81");
+    const std::string gravity =
+        replaced(kMinimal, "title = \"minimal\"", "title = \"m\"\ngravity = -9.81");
     expectError(gravity, "gravity", 2);
 }
 
@@ -392,7 +397,8 @@ TEST(CaseLoader, UnknownKeySuggestsTheNearestValidKey) {
     const std::string sectionWhat = expectError(section, "gird", lineOf(section, "[gird]"));
     EXPECT_TRUE(contains(sectionWhat, "Did you mean 'grid'?")) << sectionWhat;
 
-    const std::string nested = replaced(kMinimal, "mode = \"constant\"", "mode = \"constant\"\nvalu = 1e-10");
+    const std::string nested =
+        replaced(kMinimal, "mode = \"constant\"", "mode = \"constant\"\nvalu = 1e-10");
     const std::string nestedWhat =
         expectError(nested, "materials.sand.permeability.valu", lineOf(nested, "valu "));
     EXPECT_TRUE(contains(nestedWhat, "Did you mean 'value'?")) << nestedWhat;
@@ -407,15 +413,18 @@ TEST(CaseLoader, KeyInTheWrongTableSaysWhereItBelongs) {
 }
 
 TEST(CaseLoader, UnknownChoiceListsTheAllowedValues) {
-    const std::string text = replaced(kMinimal, "[grid]\n", "[grid]\nshape_functions = \"gimpp\"\n");
-    const std::string what = expectError(text, "grid.shape_functions", lineOf(text, "shape_functions"));
+    const std::string text =
+        replaced(kMinimal, "[grid]\n", "[grid]\nshape_functions = \"gimpp\"\n");
+    const std::string what =
+        expectError(text, "grid.shape_functions", lineOf(text, "shape_functions"));
     EXPECT_TRUE(contains(what, "\"linear\", \"gimp\"")) << what;
     EXPECT_TRUE(contains(what, "Did you mean \"gimp\"?")) << what;
 
     const std::string mode = replaced(kMinimal, "mode = \"constant\"", "mode = \"darcy\"");
     const std::string modeWhat =
         expectError(mode, "materials.sand.permeability.mode", lineOf(mode, "mode = \"darcy\""));
-    EXPECT_TRUE(contains(modeWhat, "\"constant\", \"kozeny_carman\", \"kozeny_carman_scaled\"")) << modeWhat;
+    EXPECT_TRUE(contains(modeWhat, "\"constant\", \"kozeny_carman\", \"kozeny_carman_scaled\""))
+        << modeWhat;
 }
 
 TEST(CaseLoader, LayerNamingAnUndefinedMaterialIsRejected) {
@@ -435,7 +444,8 @@ TEST(CaseLoader, LayerNotAWholeNumberOfCellsIsRejected) {
 }
 
 TEST(CaseLoader, NoLayerIsRejected) {
-    const std::string text = replaced(kMinimal, "[[layers]]\nmaterial = \"sand\"\nthickness = 0.1\n", "");
+    const std::string text =
+        replaced(kMinimal, "[[layers]]\nmaterial = \"sand\"\nthickness = 0.1\n", "");
     expectError(text, "layers", 1);
     const std::string table = replaced(kMinimal, "[[layers]]", "[layers]");
     const std::string what = expectError(table, "layers", lineOf(table, "[layers]"));
@@ -446,7 +456,8 @@ TEST(CaseLoader, ChamberGeometryMustFitTheGrid) {
     const std::string text = replaced(kMinimal, "chamber_height = 0.02", "chamber_height = 0.025");
     expectError(text, "column.chamber_height", lineOf(text, "chamber_height"));
     const std::string thin = replaced(kMinimal, "chamber_height = 0.02", "chamber_height = 0.005");
-    const std::string what = expectError(thin, "column.chamber_height", lineOf(thin, "chamber_height"));
+    const std::string what =
+        expectError(thin, "column.chamber_height", lineOf(thin, "chamber_height"));
     EXPECT_TRUE(contains(what, "at least one cell")) << what;
     const std::string top = replaced(kMinimal, "top = 0.2", "top = 0.205");
     expectError(top, "column.top", lineOf(top, "top = 0.205"));
@@ -482,14 +493,17 @@ TEST(CaseLoader, PermeabilityModeNeedsItsOwnKeys) {
     const std::string missing = replaced(kMinimal, "value = 1.49e-10\n", "");
     expectError(missing, "materials.sand.permeability.value",
                 lineOf(missing, "[materials.sand.permeability]"));
-    const std::string extra = replaced(kMinimal, "value = 1.49e-10", "value = 1.49e-10\ngrain_size = 2e-4");
+    const std::string extra =
+        replaced(kMinimal, "value = 1.49e-10", "value = 1.49e-10\ngrain_size = 2e-4");
     expectError(extra, "materials.sand.permeability.grain_size", lineOf(extra, "grain_size"));
-    const std::string none = replaced(kMinimal, "[materials.sand.permeability]\nmode = \"constant\"\nvalue = 1.49e-10\n", "");
+    const std::string none = replaced(
+        kMinimal, "[materials.sand.permeability]\nmode = \"constant\"\nvalue = 1.49e-10\n", "");
     expectError(none, "materials.sand.permeability", lineOf(none, "[materials.sand]"));
 }
 
 TEST(CaseLoader, ViscosityInKiloPascalSecondsIsRejected) {
-    const std::string text = replaced(kMinimal, "[time]\n", "[liquid]\nviscosity = 8.91e-7\n[time]\n");
+    const std::string text =
+        replaced(kMinimal, "[time]\n", "[liquid]\nviscosity = 8.91e-7\n[time]\n");
     const std::string what = expectError(text, "liquid.viscosity", lineOf(text, "viscosity"));
     EXPECT_TRUE(contains(what, "not kPa s")) << what;
 }
@@ -501,8 +515,8 @@ TEST(CaseLoader, CrossChecksBetweenSections) {
 
     const std::string flux = replaced(kMinimal, "[time]\n", "[gate]\nmode = \"flux\"\n[time]\n");
     expectError(flux, "gate.flux", lineOf(flux, "[gate]"));
-    const std::string fluxOk = replaced(kMinimal, "[reservoir]\nhead = 0.15\n",
-                                        "[gate]\nmode = \"flux\"\nflux = 1e-3\n");
+    const std::string fluxOk =
+        replaced(kMinimal, "[reservoir]\nhead = 0.15\n", "[gate]\nmode = \"flux\"\nflux = 1e-3\n");
     EXPECT_DOUBLE_EQ(parseCase(fluxOk, kFile).gate.flux, 1e-3);
     const std::string fluxUnused = replaced(kMinimal, "[time]\n", "[gate]\nflux = 1e-3\n[time]\n");
     expectError(fluxUnused, "gate.flux", lineOf(fluxUnused, "flux = "));
@@ -511,9 +525,11 @@ TEST(CaseLoader, CrossChecksBetweenSections) {
     expectError(noHead, "reservoir.head", lineOf(noHead, "[reservoir]"));
     const std::string lumped = replaced(kMinimal, "head = 0.15", "model = \"lumped\"\nhead = 0.15");
     expectError(lumped, "reservoir.area", lineOf(lumped, "[reservoir]"));
-    const std::string rate = replaced(kMinimal, "head = 0.15", "model = \"lumped\"\nhead = 0.15\narea = 1\nhead_rate = 1e-3");
+    const std::string rate = replaced(
+        kMinimal, "head = 0.15", "model = \"lumped\"\nhead = 0.15\narea = 1\nhead_rate = 1e-3");
     expectError(rate, "reservoir.head_rate", lineOf(rate, "head_rate"));
-    const std::string tube = replaced(kMinimal, "head = 0.15", "model = \"lumped\"\nhead = 0.15\narea = 1\ntube_diameter = 0.01");
+    const std::string tube = replaced(
+        kMinimal, "head = 0.15", "model = \"lumped\"\nhead = 0.15\narea = 1\ntube_diameter = 0.01");
     expectError(tube, "reservoir.tube_length", lineOf(tube, "[reservoir]"));
 }
 
@@ -521,7 +537,8 @@ TEST(CaseLoader, MonitorsAreCheckedForUniqueNamesAndElevation) {
     const std::string text = kMinimal +
                              "[[monitors]]\nname = \"a\"\nelevation = 0.05\n"
                              "[[monitors]]\nname = \"a\"\nelevation = 0.06\n";
-    const std::string what = expectError(text, "monitors[1].name", lineOf(text, "name = \"a\"\nelevation = 0.06"));
+    const std::string what =
+        expectError(text, "monitors[1].name", lineOf(text, "name = \"a\"\nelevation = 0.06"));
     EXPECT_TRUE(contains(what, "unique")) << what;
     const std::string high = kMinimal + "[[monitors]]\nname = \"a\"\nelevation = 0.3\n";
     expectError(high, "monitors[0].elevation", lineOf(high, "elevation"));
@@ -530,7 +547,8 @@ TEST(CaseLoader, MonitorsAreCheckedForUniqueNamesAndElevation) {
 TEST(CaseLoader, TwoDimensionalGridNeedsAWholeWidth) {
     const std::string text = replaced(kMinimal, "[grid]\n", "[grid]\ndimension = 2\n");
     expectError(text, "grid.width", lineOf(text, "[grid]"));
-    const std::string odd = replaced(kMinimal, "[grid]\n", "[grid]\ndimension = 2\nwidth = 0.085\n");
+    const std::string odd =
+        replaced(kMinimal, "[grid]\n", "[grid]\ndimension = 2\nwidth = 0.085\n");
     expectError(odd, "grid.width", lineOf(odd, "width"));
     const std::string ok = replaced(kMinimal, "[grid]\n", "[grid]\ndimension = 2\nwidth = 0.08\n");
     EXPECT_EQ(parseCase(ok, kFile).grid.dimension, 2);
@@ -540,8 +558,9 @@ class CaseDirectoryTest : public ::testing::Test {
 protected:
     void SetUp() override {
         dir_ = std::filesystem::temp_directory_path() /
-               ("quicksand_caseloader_" + std::to_string(::testing::UnitTest::GetInstance()->random_seed()) +
-                "_" + ::testing::UnitTest::GetInstance()->current_test_info()->name());
+               ("quicksand_caseloader_" +
+                std::to_string(::testing::UnitTest::GetInstance()->random_seed()) + "_" +
+                ::testing::UnitTest::GetInstance()->current_test_info()->name());
         std::filesystem::remove_all(dir_);
         std::filesystem::create_directories(dir_);
     }
@@ -582,8 +601,9 @@ TEST_F(CaseDirectoryTest, OpenFoamCaseIsResolvedAgainstTheCaseDirectory) {
     const std::string missing =
         replaced(kMinimal, "head = 0.15", "model = \"openfoam\"\nopenfoam_case = \"nowhere\"");
     EXPECT_THROW(parseCase(missing, kFile, dir_.string()), InputError);
-    const std::string head = replaced(kMinimal, "head = 0.15",
-                                      "model = \"openfoam\"\nopenfoam_case = \"reservoir\"\nhead = 0.15");
+    const std::string head =
+        replaced(kMinimal, "head = 0.15",
+                 "model = \"openfoam\"\nopenfoam_case = \"reservoir\"\nhead = 0.15");
     EXPECT_THROW(parseCase(head, kFile, dir_.string()), InputError);
 }
 

@@ -1,0 +1,69 @@
+// Verification problem 1 (physics.md section 4): geostatic column, water at the sand top.
+// p(base) = rho_L g H = 1821.4 Pa, sigma'_v(base) = (1-n)(rho_s-rho_L) g H = 1868.7 Pa,
+// sigma'_h = K0 sigma'_v, within 2 %; spurious filter velocity below 1e-3 K throughout.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "VerificationCase.hpp"
+#include "physics/ClosedForms.hpp"
+
+using namespace qs;
+using namespace qs::test;
+
+TEST(Geostatic, PorePressureAndEffectiveStressMatchClosedForm) {
+    const CaseRun run = runVerificationCase("geostatic");
+    const auto& c = run.config;
+    const auto& sand = c.material("sand");
+    const double g = c.gravity, rhoL = c.liquid.density;
+    const double H = c.sandTop() - c.filterLevel();
+    const double pBase = rhoL * g * H;
+    const double sBase = (1 - sand.porosity) * (sand.grainDensity - rhoL) * g * H;
+    ASSERT_NEAR(pBase, 1821.4, 0.1);   // physics.md's numbers, from the case's data
+    ASSERT_NEAR(sBase, 1868.7, 0.1);
+
+    const auto rows = sandRows(run.summary.profile);
+    ASSERT_EQ(rows.size(), 20u);
+    for (const auto& r : rows) {
+        const double depth = c.sandTop() - r.z;
+        EXPECT_NEAR(r.porePressure, rhoL * g * (c.column.waterLevel - r.z), 0.02 * pBase) << "z = " << r.z;
+        EXPECT_NEAR(-r.verticalStress, sBase * depth / H, 0.02 * sBase) << "z = " << r.z;
+        EXPECT_NEAR(-r.horizontalStress, sand.k0 * sBase * depth / H, 0.02 * sand.k0 * sBase) << "z = " << r.z;
+    }
+    // the base values, from straight lines through the cell means
+    const auto p = fitLine(rows, [](const CellRow& r) { return r.porePressure; });
+    const auto s = fitLine(rows, [](const CellRow& r) { return -r.verticalStress; });
+    const double zBase = c.filterLevel();
+    EXPECT_NEAR(p.first + p.second * zBase, pBase, 0.02 * pBase);
+    EXPECT_NEAR(s.first + s.second * zBase, sBase, 0.02 * sBase);
+
+    // no spurious flow
+    const double K = closed::hydraulicConductivity(sand.permeability.value, rhoL, g, c.liquid.viscosity);
+    for (const auto& st : run.series) {
+        EXPECT_LT(std::abs(st.monitorFlux.at(0)), 1e-3 * K) << "t = " << st.time;
+        EXPECT_LT(std::abs(st.gateFlux / c.grid.crossSectionArea), 1e-3 * K) << "t = " << st.time;
+    }
+    EXPECT_GE(run.series.back().time, c.time.end - 1e-9);
+}
+
+TEST(Geostatic, GravityStageWithLocalDampingReachesTheSameState) {
+    // Start from zero effective stress and let a damped gravity stage find equilibrium: the
+    // vertical stress must match the closed form; the horizontal one follows elasticity,
+    // nu/(1-nu) sigma'_v, not K0 (physics.md section 1).
+    const CaseRun run = runVerificationCase("geostatic", [](CaseConfig& c) {
+        c.initial.stress = InitialStress::Zero;
+        c.initial.gravityStageDuration = 1.0;
+        c.initial.gravityStageDamping = 0.1;
+        c.time.end = 0.05;
+    });
+    const auto& c = run.config;
+    const auto& sand = c.material("sand");
+    const double H = c.sandTop() - c.filterLevel();
+    const double sBase = (1 - sand.porosity) * (sand.grainDensity - c.liquid.density) * c.gravity * H;
+    const double lateral = sand.poissonRatio / (1 - sand.poissonRatio);
+    for (const auto& r : sandRows(run.summary.profile)) {
+        const double depth = c.sandTop() - r.z;
+        EXPECT_NEAR(-r.verticalStress, sBase * depth / H, 0.02 * sBase) << "z = " << r.z;
+        EXPECT_NEAR(-r.horizontalStress, lateral * sBase * depth / H, 0.02 * sBase) << "z = " << r.z;
+    }
+}
