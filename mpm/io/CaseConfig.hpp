@@ -123,7 +123,6 @@ struct TimeConfig {
     std::optional<double> dt;          ///< s, fixed step (must not exceed the stable one)
     double outputInterval = 0.01;      ///< s
     double checkpointInterval = 0.0;   ///< s of simulated time (0: only at the end)
-    int sortInterval = 1;              ///< steps between re-sorting points by cell
 };
 
 struct MonitorConfig {

@@ -51,7 +51,7 @@ constexpr const char* kReservoirKeys[] = {
     "model",       "head",       "head_rate",     "area",       "tube_diameter",
     "tube_length", "minor_loss", "openfoam_case", "gate_patch", "reservoir_patch"};
 constexpr const char* kTimeKeys[] = {
-    "end", "courant", "dt", "output_interval", "checkpoint_interval", "sort_interval"};
+    "end", "courant", "dt", "output_interval", "checkpoint_interval"};
 constexpr const char* kMonitorKeys[] = {"name", "elevation"};
 constexpr const char* kOutputKeys[] = {"directory", "fields", "progress_interval"};
 
@@ -873,8 +873,6 @@ private:
         t.outputInterval = s.optionalNumber("output_interval", t.end / 100.0, positive("s"));
         t.checkpointInterval =
             s.optionalNumber("checkpoint_interval", 0.0, nonNegative("s"), "0: only at the end");
-        t.sortInterval = s.integer(
-            "sort_interval", 1, between(1, false, std::numeric_limits<double>::infinity(), false));
     }
 
     void readMonitors(const Section& root) {

@@ -74,7 +74,8 @@ void reorderPoints(Set& set, const std::vector<Index>& order, ReorderScratch& sc
         for (std::size_t k = 0; k < n; ++k)
             for (int c = 0; c < components; ++c)
                 tmp[k * components + c] = field[order[k] * components + c];
-        field.swap(tmp);
+        // copy back rather than swap: the scratch keeps its capacity and nothing reallocates
+        std::copy(tmp.begin(), tmp.end(), field.begin());
     });
 }
 

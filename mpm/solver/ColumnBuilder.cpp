@@ -75,8 +75,11 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
     const Real rhoL = config.liquid.density;
     const Real zWater = config.column.waterLevel;
     const int spc = config.points.solidPerCell, lpc = config.points.liquidPerCell;
+    // uGIMP half-lengths from the finest spacing of each set: free-water liquid points sit closer
+    // (ceil(lpc / n_min) per cell vertically), and a point nearer to the grid's edge than its
+    // half-length would lose weight to a node outside the grid
     solid.halfLength = 0.5 * h / spc;
-    liquid.halfLength = 0.5 * h / lpc;
+    liquid.halfLength = 0.5 * h / std::max(lpc, freeWaterPointsPerCell(config));
 
     auto hydrostatic = [&](Real z) { return std::max(Real(0), rhoL * g * (zWater - z)); };
 

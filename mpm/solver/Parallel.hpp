@@ -5,17 +5,25 @@
 // its own outputs (nodes, cells, points reading the grid).
 //
 // forEachPointColoured(grid, cellStart, f): f(p) for every point, scattering to the grid without
-// races or locks: cells are grouped in blocks of 2 per axis, and blocks of one colour (parity per
-// axis) never share a node, since a point touches at most 3 nodes per axis (kStencil). Inside a
-// block, points run in their sorted order, so every node sums its contributions in the same order
-// whatever the number of threads: results are identical for 1 and 2 threads.
+// races or locks: cells are grouped in blocks of 3 per axis, and blocks of one colour (parity per
+// axis) never share a node: a point in cell c touches nodes c-1 .. c+2 at most (uGIMP, kStencil),
+// so block [3b, 3b+2] touches nodes 3b-1 .. 3b+4 and the next block of its colour starts at node
+// 3b+5. Inside a block, points run in their sorted order, so every node sums its contributions in
+// the same order whatever the number of threads: results are identical for 1 and 2 threads.
+//
+// Small problems (a 1D column of a few dozen cells) run serially: there the cost of waking
+// threads exceeds the work.
 #include "grid/Grid.hpp"
 
 namespace qs {
 
+constexpr Index kMinParallelItems = 4096;  ///< below this many items a loop runs serially
+constexpr Index kMinParallelBlocks = 16;   ///< below this many blocks per colour, serially
+constexpr Index kBlockCells = 3;           ///< cells per block and axis in coloured scatters
+
 template <class F>
 inline void forAll(Index n, F&& f) {
-#pragma omp parallel for schedule(static)
+#pragma omp parallel for schedule(static) if (n >= kMinParallelItems)
     for (Index i = 0; i < n; ++i) f(i);
 }
 
@@ -24,11 +32,11 @@ void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellSta
     IVec<D> blocks;
     Index numBlocks = 1;
     for (int d = 0; d < D; ++d) {
-        blocks[d] = (grid.cells(d) + 1) / 2;
+        blocks[d] = (grid.cells(d) + kBlockCells - 1) / kBlockCells;
         numBlocks *= blocks[d];
     }
     for (int colour = 0; colour < (1 << D); ++colour) {
-#pragma omp parallel for schedule(dynamic, 4)
+#pragma omp parallel for schedule(dynamic, 4) if (numBlocks >= (kMinParallelBlocks << D))
         for (Index b = 0; b < numBlocks; ++b) {
             IVec<D> bc;
             Index rest = b;
@@ -39,12 +47,15 @@ void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellSta
                 if ((bc[d] & 1) != ((colour >> d) & 1)) match = false;
             }
             if (!match) continue;
-            // the block's cells, at most 2 per axis
-            for (int k = 0; k < (1 << D); ++k) {
+            // the block's cells, kBlockCells per axis, in lexicographic (sorted) order
+            constexpr int cellsPerBlock = D == 1 ? 3 : (D == 2 ? 9 : 27);
+            for (int k = 0; k < cellsPerBlock; ++k) {
                 IVec<D> c;
                 bool inside = true;
+                int rest = k;
                 for (int d = 0; d < D; ++d) {
-                    c[d] = 2 * bc[d] + ((k >> d) & 1);
+                    c[d] = kBlockCells * bc[d] + rest % kBlockCells;
+                    rest /= kBlockCells;
                     if (c[d] >= grid.cells(d)) inside = false;
                 }
                 if (!inside) continue;

@@ -106,7 +106,8 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     }
 
     const double interval = config.time.outputInterval;
-    double nextOutput = options.resume ? solver.time() + interval : 0.0;
+    // outputs stay on the grid k * interval, also after a resume
+    double nextOutput = options.resume ? (std::floor(solver.time() / interval + 0.5) + 1) * interval : 0.0;
     double nextCheckpoint = config.time.checkpointInterval > 0
                                 ? solver.time() + config.time.checkpointInterval
                                 : 1e300;

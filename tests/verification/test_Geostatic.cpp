@@ -11,8 +11,13 @@
 using namespace qs;
 using namespace qs::test;
 
-TEST(Geostatic, PorePressureAndEffectiveStressMatchClosedForm) {
-    const CaseRun run = runVerificationCase("geostatic");
+namespace {
+void checkGeostatic(ShapeFunctionKind shape, double gravityStage = 0.0) {
+    const CaseRun run = runVerificationCase("geostatic", [&](CaseConfig& c) {
+        c.grid.shapeFunctions = shape;
+        c.initial.gravityStageDuration = gravityStage;
+        c.initial.gravityStageDamping = 0.1;
+    });
     const auto& c = run.config;
     const auto& sand = c.material("sand");
     const double g = c.gravity, rhoL = c.liquid.density;
@@ -44,6 +49,19 @@ TEST(Geostatic, PorePressureAndEffectiveStressMatchClosedForm) {
         EXPECT_LT(std::abs(st.gateFlux / c.grid.crossSectionArea), 1e-3 * K) << "t = " << st.time;
     }
     EXPECT_GE(run.series.back().time, c.time.end - 1e-9);
+}
+}  // namespace
+
+TEST(Geostatic, PorePressureAndEffectiveStressMatchClosedForm) { checkGeostatic(ShapeFunctionKind::Linear); }
+
+TEST(Geostatic, PorePressureAndEffectiveStressMatchClosedFormWithGimp) {
+    // The K0 state is the exact discrete equilibrium of linear shape functions only: uGIMP's
+    // curved shape functions turn the pre-stress into small extra nodal forces once points move,
+    // and the column settles for about 0.05 s (filter velocity up to 6e-3 K in the sand, 0.2 K at
+    // the gate, where the chamber takes up the squeezed water). A short damped
+    // gravity stage from the K0 state (what initial.gravity_stage_duration is for) finds the
+    // discrete equilibrium first; the dynamic stage is then checked with the same tolerances.
+    checkGeostatic(ShapeFunctionKind::Gimp, 0.1);
 }
 
 TEST(Geostatic, GravityStageWithLocalDampingReachesTheSameState) {

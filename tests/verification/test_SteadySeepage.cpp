@@ -24,8 +24,9 @@ double closedFormFlux(const CaseConfig& c, double gradient) {
                                         c.liquid.density, c.gravity, c.liquid.viscosity);
 }
 
-void checkSteadySeepage(const std::string& name, double gradient, double reference) {
-    const CaseRun run = runVerificationCase(name);
+void checkSteadySeepage(const std::string& name, double gradient, double reference,
+                        ShapeFunctionKind shape = ShapeFunctionKind::Linear) {
+    const CaseRun run = runVerificationCase(name, [shape](CaseConfig& c) { c.grid.shapeFunctions = shape; });
     const auto& c = run.config;
     const double expected = closedFormFlux(c, gradient);
     ASSERT_NEAR(expected, reference, 5e-4 * reference) << "closed form vs physics.md";
@@ -44,6 +45,10 @@ void checkSteadySeepage(const std::string& name, double gradient, double referen
 
 TEST(SteadySeepage, CaseBConstantPermeability) {
     checkSteadySeepage("steady_seepage_B", 1.32, 2.132e-3);
+}
+
+TEST(SteadySeepage, CaseBConstantPermeabilityGimp) {
+    checkSteadySeepage("steady_seepage_B", 1.32, 2.132e-3, ShapeFunctionKind::Gimp);
 }
 
 TEST(SteadySeepage, CaseBKozenyCarman) {

@@ -12,8 +12,9 @@
 using namespace qs;
 using namespace qs::test;
 
-TEST(Terzaghi, ExcessPorePressureFollowsVerruijtSolution) {
-    const CaseRun run = runVerificationCase("terzaghi");
+namespace {
+void checkTerzaghi(ShapeFunctionKind shape) {
+    const CaseRun run = runVerificationCase("terzaghi", [shape](CaseConfig& c) { c.grid.shapeFunctions = shape; });
     const auto& c = run.config;
     const auto& sand = c.material("sand");
     const double Eoed = closed::oedometricModulus(sand.youngsModulus, sand.poissonRatio);
@@ -44,3 +45,8 @@ TEST(Terzaghi, ExcessPorePressureFollowsVerruijtSolution) {
     EXPECT_GT(cv * run.series.back().time / (H * H), 0.5);
     std::printf("Terzaghi: largest |u/u0 - exact| over T >= 0.05: %.4f\n", worst);
 }
+}  // namespace
+
+TEST(Terzaghi, ExcessPorePressureFollowsVerruijtSolution) { checkTerzaghi(ShapeFunctionKind::Linear); }
+
+TEST(Terzaghi, ExcessPorePressureFollowsVerruijtSolutionWithGimp) { checkTerzaghi(ShapeFunctionKind::Gimp); }

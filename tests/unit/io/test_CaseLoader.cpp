@@ -150,7 +150,6 @@ TEST(CaseLoader, MinimalCaseGetsTheDefaults) {
     EXPECT_FALSE(c.time.dt.has_value());
     EXPECT_DOUBLE_EQ(c.time.outputInterval, 0.01);
     EXPECT_DOUBLE_EQ(c.time.checkpointInterval, 0.0);
-    EXPECT_EQ(c.time.sortInterval, 1);
     EXPECT_TRUE(c.monitors.empty());
     EXPECT_EQ(c.output.directory, "output");
     EXPECT_TRUE(c.output.fields);
@@ -233,7 +232,6 @@ courant = 0.3
 dt = 1e-5
 output_interval = 0.05
 checkpoint_interval = 1
-sort_interval = 10
 [[monitors]]
 name = "bottom"
 elevation = 0.03
@@ -280,7 +278,6 @@ progress_interval = 5
     EXPECT_DOUBLE_EQ(c.reservoir.minorLoss, 1.2);
     ASSERT_TRUE(c.time.dt.has_value());
     EXPECT_DOUBLE_EQ(*c.time.dt, 1e-5);
-    EXPECT_EQ(c.time.sortInterval, 10);
     ASSERT_EQ(c.monitors.size(), 2u);
     EXPECT_EQ(c.monitors[1].name, "middle");
     EXPECT_DOUBLE_EQ(c.monitors[1].elevation, 0.12);
@@ -319,8 +316,8 @@ TEST(CaseLoader, WrongTypeIsRejected) {
     EXPECT_TRUE(contains(what, "expected a number")) << what;
     EXPECT_TRUE(contains(what, "a string \"0.01\"")) << what;
 
-    const std::string boolText = replaced(kMinimal, "[time]\n", "[time]\nsort_interval = true\n");
-    expectError(boolText, "time.sort_interval", lineOf(boolText, "sort_interval"));
+    const std::string boolText = replaced(kMinimal, "[time]\n", "[time]\ncourant = true\n");
+    expectError(boolText, "time.courant", lineOf(boolText, "courant"));
 
     const std::string tableText =
         replaced(kMinimal, "title = \"minimal\"", "title = \"m\"\nliquid = 3");
