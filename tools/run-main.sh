@@ -9,8 +9,9 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-# TODO(lead): the main case; this default is a placeholder.
-main_case="${MAIN_CASE:-cases/verification/steady_seepage}"
+# The main job: the Deltares column. Until the OpenFOAM reservoir lands (issue 3) it is the
+# standalone case with a lumped reservoir and U-tube.
+main_case="${MAIN_CASE:-cases/deltaresColumnLumped}"
 build_dir="${QUICKSAND_BUILD_DIR:-build}"
 
 if [[ ! -f "$main_case/case.toml" ]]; then
@@ -34,10 +35,11 @@ PY
 [[ "$output_dir" = /* ]] || output_dir="$main_case/$output_dir"
 
 /usr/bin/python3 tools/plot_series.py "$output_dir"
+/usr/bin/python3 tools/plot_profiles.py "$output_dir"
 
 echo
 echo "Results of $main_case:"
-for f in series.csv fields.h5 fields.xdmf series.png; do
+for f in series.csv fields.h5 fields.xdmf series.png profiles.png; do
     if [[ -e "$output_dir/$f" ]]; then
         echo "  $output_dir/$f"
     else
