@@ -9,6 +9,7 @@
 #include "materials/StressTensor.hpp"
 #include "physics/ClosedForms.hpp"
 #include "solver/ColumnBuilder.hpp"
+#include "boundary/Overflow.hpp"
 #include "solver/Parallel.hpp"
 
 namespace qs {
@@ -59,11 +60,12 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
 
     buildColumn(config, grid_, materials_, solid_, liquid_);
     allocate();
-    buildBoundaryMasks();
-
-    // New points must not leave sand cells empty when they get there (physics.md, inflow).
-    injectVolume_ = grid_.cellVolume() / freeWaterPointsPerCell(config) /
-                    std::pow(Real(config.points.liquidPerCell), D - 1);
+    masks_.build(grid_, config);
+    // new points as small as the free-water points, so they do not leave sand cells empty
+    chamber_.setup(grid_,
+                   grid_.cellVolume() / freeWaterPointsPerCell(config) /
+                       std::pow(Real(config.points.liquidPerCell), D - 1),
+                   config.points.liquidPerCell);
 
     for (const auto& m : config.monitors) {
         const Index row = std::clamp<Index>(std::llround(m.elevation / h), 0, grid_.nodes(D - 1) - 1);
@@ -90,8 +92,6 @@ void DoublePointSolver<D>::allocate() {
         a->assign(nn, 0.0);
     for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velSOld_, &velLOld_})
         a->assign(nn * D, 0.0);
-    solidFixed_.assign(nn * D, 0);
-    liquidFixed_.assign(nn * D, 0);
     solidCellStart_.assign(nc + 1, 0);
     liquidCellStart_.assign(nc + 1, 0);
     counts_.assign(nc + 1, 0);
@@ -116,49 +116,6 @@ void DoublePointSolver<D>::allocate() {
     liquid_.strainVol.reserve(liquidCapacity);
     solid_.shape.reserve(solid_.size());
     dropFlags_.reserve(liquidCapacity);
-
-    Index columns = 1;
-    for (int d = 0; d < D - 1; ++d) columns *= grid_.cells(d);
-    gap_.assign(columns, 0.0);
-}
-
-template <int D>
-void DoublePointSolver<D>::buildBoundaryMasks() {
-    const Index filterRow = roundCells(config_.filterLevel(), grid_.h());
-    for (Index i = 0; i < grid_.numNodes(); ++i) {
-        const IVec<D> n = grid_.nodeCoords(i);
-        // smooth lateral walls: the normal component of both phases is held
-        for (int d = 0; d < D - 1; ++d) {
-            if (n[d] == 0 || n[d] == grid_.nodes(d) - 1) {
-                solidFixed_[i * D + d] = 1;
-                liquidFixed_[i * D + d] = 1;
-            }
-        }
-        // the filter holds the solid both ways (a one-way support lets the bed lift off as a plug)
-        if (n[D - 1] == filterRow) {
-            solidFixed_[i * D + D - 1] = 1;
-            filterNodes_.push_back(i);
-        }
-        if (n[D - 1] == 0) {
-            gateNodes_.push_back(i);
-            if (config_.gate.mode != GateMode::Pressure) liquidFixed_[i * D + D - 1] = 1;
-            solidFixed_[i * D + D - 1] = 1;
-        }
-        if (config_.initial.rigidSkeleton)
-            for (int d = 0; d < D; ++d) solidFixed_[i * D + d] = 1;
-    }
-}
-
-template <int D>
-Real DoublePointSolver<D>::nodeFootprint(Index node) const {
-    // share of the horizontal face carried by one node (the whole area in 1D)
-    const IVec<D> n = grid_.nodeCoords(node);
-    Real a = grid_.outOfPlane();
-    for (int d = 0; d < D - 1; ++d) {
-        const bool edge = n[d] == 0 || n[d] == grid_.nodes(d) - 1;
-        a *= edge ? 0.5 * grid_.h() : grid_.h();
-    }
-    return a;
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -394,35 +351,22 @@ void DoublePointSolver<D>::computeForces() {
     // Gate: the reservoir's pressure acts on the chamber's liquid at the gate plane, less the
     // weight of the empty gap below the lowest liquid point (physics.md, gate).
     if (config_.gate.mode == GateMode::Pressure) {
-        const Index columns = static_cast<Index>(gap_.size());
-        for (Index i : gateNodes_) {
-            Index col = 0;
-            if (D > 1) col = std::min<Index>(grid_.nodeCoords(i)[0], columns - 1);
-            const Real p = gateLaw_.staticPressure - rhoL * g * gap_[col];
-            forceL_[i * D + D - 1] += p * nodeFootprint(i);
+        for (Index i : masks_.gateNodes) {
+            const Real p = gateLaw_.staticPressure - rhoL * g * chamber_.gap(chamber_.columnOfNode(grid_, i));
+            forceL_[i * D + D - 1] += p * nodeFootprint(grid_, i);
         }
     }
 
     // Surcharge on the sand top (solid phase) and the overflow level's missing water on the
-    // free surface, both as tractions at the surface elevation, N_i(z_surface).
-    auto surfaceTraction = [&](std::vector<Real>& force, Real zSurface, Real pressure) {
-        const Index row = std::clamp<Index>(static_cast<Index>(std::floor(zSurface / h)), 0,
-                                            grid_.cells(D - 1) - 1);
-        const Real xi = zSurface / h - row;
-        for (Index i = 0; i < grid_.numNodes(); ++i) {
-            const Index nz = grid_.nodeCoords(i)[D - 1];
-            const Real N = nz == row ? 1 - xi : (nz == row + 1 ? xi : 0.0);
-            if (N != 0) force[i * D + D - 1] -= pressure * N * nodeFootprint(i);
-        }
-    };
+    // free surface, both as tractions at the surface elevation.
     const Real q = surchargeNow();
-    if (q != 0) surfaceTraction(forceS_, sandSurface(), q);
+    if (q != 0) addSurfaceTraction(grid_, forceS_, sandSurface(), q);
     surfacePressure_ = 0;
     if (config_.column.overflowLevel) {
-        const Real zs = waterSurfaceFromMass();
+        const Real zs = waterSurface();
         if (zs > 0) {
             surfacePressure_ = rhoL * g * (*config_.column.overflowLevel - zs);
-            surfaceTraction(forceL_, zs, surfacePressure_);
+            addSurfaceTraction(grid_, forceL_, zs, surfacePressure_);
         }
     }
 }
@@ -436,7 +380,7 @@ void DoublePointSolver<D>::solveNodes() {
     const Real dt = dt_;
     const Real vGate = gateVelocityNow();
     Real area = 0;
-    for (Index i : gateNodes_) area += nodeFootprint(i);
+    for (Index i : masks_.gateNodes) area += nodeFootprint(grid_, i);
     const Real gateResistance = config_.gate.mode == GateMode::Pressure ? gateLaw_.resistance : 0.0;
     const Index rowStride = grid_.nodeStride(D - 1);
 
@@ -444,7 +388,7 @@ void DoublePointSolver<D>::solveNodes() {
         const Real mS = massS_[i], mL = massL_[i], Q = drag_[i];
         const bool isGate = i < rowStride;  // bottom node row
         // implicit tube loss at the gate: M_L v = M_L v* - dt c v, c = R A_total A_i
-        const Real c = isGate ? gateResistance * area * nodeFootprint(i) : 0.0;
+        const Real c = isGate ? gateResistance * area * nodeFootprint(grid_, i) : 0.0;
         Real w2 = 0;
         for (int d = 0; d < D; ++d) {
             const Index k = i * D + d;
@@ -463,14 +407,14 @@ void DoublePointSolver<D>::solveNodes() {
             const Real vLfix = (isGate && vertical) ? vGate : 0.0;
             Real vS = 0, vL = 0;
             if (mS > 0 && mL > 0) {
-                if (solidFixed_[k] && liquidFixed_[k]) {
+                if (masks_.solidFixed[k] && masks_.liquidFixed[k]) {
                     vS = 0; vL = vLfix;
-                } else if (solidFixed_[k]) {
+                } else if (masks_.solidFixed[k]) {
                     // solid held: solve the liquid alone (solving the pair and overwriting one
                     // afterwards loses momentum)
                     vS = 0;
                     vL = (mL * vL1) / (mL + dt * Q + dt * cd);
-                } else if (liquidFixed_[k]) {
+                } else if (masks_.liquidFixed[k]) {
                     vL = vLfix;
                     vS = (mS * vS1 + dt * Q * vL) / (mS + dt * Q);
                 } else {
@@ -482,9 +426,9 @@ void DoublePointSolver<D>::solveNodes() {
                     vS = vm - mL * w / M;
                 }
             } else if (mL > 0) {
-                vL = liquidFixed_[k] ? vLfix : mL * vL1 / (mL + dt * cd);
+                vL = masks_.liquidFixed[k] ? vLfix : mL * vL1 / (mL + dt * cd);
             } else if (mS > 0) {
-                vS = solidFixed_[k] ? 0.0 : vS1;
+                vS = masks_.solidFixed[k] ? 0.0 : vS1;
             }
             velSOld_[k] = vS0;
             velLOld_[k] = vL0;
@@ -497,8 +441,8 @@ void DoublePointSolver<D>::solveNodes() {
 
     // Gate flux through the gate plane (free water: q = v_L).
     Real Qg = 0;
-    for (Index i : gateNodes_)
-        if (massL_[i] > 0) Qg += velL_[i * D + D - 1] * nodeFootprint(i);
+    for (Index i : masks_.gateNodes)
+        if (massL_[i] > 0) Qg += velL_[i * D + D - 1] * nodeFootprint(grid_, i);
     gateFlux_ = Qg;
 }
 
@@ -613,94 +557,23 @@ void DoublePointSolver<D>::updatePressure() {
 // ---------------------------------------------------------------------------------------------
 
 template <int D>
-Real DoublePointSolver<D>::lowestLiquidBottom(Index column) const {
-    // the lowest liquid point of a column of cells, scanning its two lowest cell rows
-    Real lowest = grid_.top();
-    const Real footprint = grid_.footprint() / std::pow(Real(config_.points.liquidPerCell), D - 1);
-    for (Index row = 0; row < 2; ++row) {
-        const Index c = column + row * grid_.cellStride(D - 1);
-        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
-            const Real halfHeight = 0.5 * liquid_.volume[p] / footprint;
-            lowest = std::min(lowest, liquid_.x[p * D + D - 1] - halfHeight);
-        }
-    }
-    return lowest;
-}
-
-template <int D>
 void DoublePointSolver<D>::exchangeAtBoundaries() {
-    const Real rhoL = config_.liquid.density;
     cumulativeInflow_ += gateFlux_ * dt_;
     gatePressure_ = gateLaw_.pressure(gateFlux_);
     reservoir_.advance(time_, dt_, gateFlux_);
 
-    // Outflow: liquid points above the overflow level leave and are counted.
     if (config_.column.overflowLevel) {
         const Real zOver = *config_.column.overflowLevel;
-        for (std::size_t p = 0; p < solid_.size(); ++p) {
-            if (solid_.x[p * D + D - 1] > zOver) {
-                std::ostringstream s;
-                s << "solid points reached the overflow level column.overflow_level = " << zOver
-                  << " m at t = " << time_ << " s (sand surface " << sandSurface()
-                  << " m): the bed expanded beyond the column; raise the overflow level and the grid top";
-                throw Error(s.str());
-            }
-        }
-        const std::size_t n = liquid_.size();
-        dropFlags_.resize(n);
-        bool any = false;
-        for (std::size_t p = 0; p < n; ++p) {
-            dropFlags_[p] = liquid_.x[p * D + D - 1] > zOver;
-            if (dropFlags_[p]) { outflowVolume_ += liquid_.mass[p] / rhoL; any = true; }
-        }
-        if (any) {
-            compactPoints(liquid_, dropFlags_);
-            // the cell lists are stale now; the next sort rebuilds them
-            std::fill(liquidCellStart_.begin(), liquidCellStart_.end(), 0);
+        checkSolidBelow(zOver, solid_, time_, sandSurface());
+        const Real out = removeLiquidAbove(zOver, config_.liquid.density, liquid_, dropFlags_);
+        if (out > 0) {
+            outflowVolume_ += out;
+            // the cell lists are stale now: rebuild them for the chamber's scan below
+            computeShape(liquid_, liquidCellStart_, counts_);
         }
     }
-
-    // Inflow: when the gap below the lowest liquid point of a chamber column reaches one new
-    // point's height, inject one (physics.md, inflow).
-    if (config_.gate.mode != GateMode::Closed) {
-        const int lpc = config_.points.liquidPerCell;
-        const Real footprint = grid_.footprint() / std::pow(Real(lpc), D - 1);
-        const Real height = injectVolume_ / footprint;
-        // recompute cell lists of the bottom rows if outflow cleared them
-        if (liquidCellStart_.back() == 0) computeShape(liquid_, liquidCellStart_, counts_);
-        for (Index col = 0; col < static_cast<Index>(gap_.size()); ++col) {
-            Real bottom = lowestLiquidBottom(col);
-            // velocity and pressure of the new water: those of the lowest point of the column
-            Index ref = -1;
-            for (Index row = 0; row < 2 && ref < 0; ++row) {
-                const Index c = col + row * grid_.cellStride(D - 1);
-                for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p)
-                    if (ref < 0 || liquid_.x[p * D + D - 1] < liquid_.x[ref * D + D - 1]) ref = p;
-            }
-            while (bottom >= height) {
-                const IVec<D> cc = grid_.cellCoords(col);
-                const Real spacing = grid_.h() / lpc;
-                const int nh = static_cast<int>(std::pow(lpc, D - 1));
-                for (int k = 0; k < nh; ++k) {
-                    int rest = k;
-                    for (int d = 0; d < D - 1; ++d) {
-                        liquid_.x.push_back(cc[d] * grid_.h() + (rest % lpc + 0.5) * spacing);
-                        rest /= lpc;
-                    }
-                    liquid_.x.push_back(bottom - 0.5 * height);
-                    for (int d = 0; d < D; ++d)
-                        liquid_.v.push_back(ref >= 0 ? liquid_.v[ref * D + d] : 0.0);
-                    liquid_.mass.push_back(rhoL * injectVolume_);
-                    liquid_.volume.push_back(injectVolume_);
-                    liquid_.pressure.push_back(ref >= 0 ? liquid_.pressure[ref] : gatePressure_);
-                    liquid_.state.push_back(kSubmergedLiquid);
-                    injectedVolume_ += injectVolume_;
-                }
-                bottom -= height;
-            }
-            gap_[col] = std::max(Real(0), bottom);
-        }
-    }
+    if (config_.gate.mode != GateMode::Closed)
+        chamber_.inject(grid_, liquid_, liquidCellStart_, config_.liquid.density, gatePressure_);
 
     time_ += dt_;
     ++steps_;
@@ -746,11 +619,11 @@ void DoublePointSolver<D>::runGravityStage() {
     std::fill(solid_.v.begin(), solid_.v.end(), 0.0);
     std::fill(liquid_.v.begin(), liquid_.v.end(), 0.0);
     std::fill(relSpeed_.begin(), relSpeed_.end(), 0.0);
-    cumulativeInflow_ = injectedVolume_ = outflowVolume_ = 0;
+    cumulativeInflow_ = outflowVolume_ = 0;
+    chamber_.setInjectedVolume(0);
     initialLiquidMass_ = 0;
     for (Real m : liquid_.mass) initialLiquidMass_ += m;
-    initialGapVolume_ = 0;
-    for (Real g : gap_) initialGapVolume_ += g;
+    initialGapVolume_ = chamber_.gapVolume(grid_);
     gateLaw_ = reservoir_.gateLaw(0.0);
 }
 
@@ -774,32 +647,13 @@ Real DoublePointSolver<D>::gateVelocityNow() const {
 
 template <int D>
 Real DoublePointSolver<D>::sandSurface() const {
-    const Real footprint = grid_.footprint() / std::pow(Real(config_.points.solidPerCell), D - 1);
-    Real top = config_.filterLevel();
-    for (std::size_t p = 0; p < solid_.size(); ++p)
-        top = std::max(top, solid_.x[p * D + D - 1] + 0.5 * solid_.volume[p] / footprint);
-    return top;
+    return sandSurfaceOf(grid_, solid_, config_.filterLevel(), config_.points.solidPerCell);
 }
 
 template <int D>
-Real DoublePointSolver<D>::waterSurfaceFromMass() const {
-    // z_surface from the liquid mass above a reference plane one cell above the sand (the MP
-    // volumes drift; the mass does not). Points straddling the plane count by their fraction.
-    const Real zRef = sandSurface() + grid_.h();
-    const Real footprint = grid_.footprint() / std::pow(Real(config_.points.liquidPerCell), D - 1);
-    const Real rhoL = config_.liquid.density;
-    Real mass = 0;
-    for (std::size_t p = 0; p < liquid_.size(); ++p) {
-        const Real z = liquid_.x[p * D + D - 1];
-        const Real half = 0.5 * liquid_.mass[p] / rhoL / footprint;
-        if (z + half <= zRef) continue;
-        const Real frac = std::min(Real(1), (z + half - zRef) / (2 * half));
-        mass += frac * liquid_.mass[p];
-    }
-    Real columns = 1;
-    for (int d = 0; d < D - 1; ++d) columns *= grid_.cells(d);
-    if (mass == 0) return 0.0;
-    return zRef + mass / (rhoL * grid_.footprint() * columns);
+Real DoublePointSolver<D>::waterSurface() const {
+    return waterSurfaceFromMass(grid_, liquid_, sandSurface() + grid_.h(), config_.liquid.density,
+                                config_.points.liquidPerCell);
 }
 
 template <int D>
@@ -810,13 +664,13 @@ ColumnState DoublePointSolver<D>::columnState() const {
     s.gatePressure = gatePressure_;
     s.reservoirHead = reservoir_.head();
     s.sandSurface = sandSurface();
-    s.waterSurface = waterSurfaceFromMass();
+    s.waterSurface = waterSurface();
     for (Index row : monitorNodes_) {
         // q = n (v_L - v_S) on the grid, averaged over the section's nodes by footprint
         Real q = 0, a = 0;
         for (Index i = 0; i < grid_.numNodes(); ++i) {
             if (grid_.nodeCoords(i)[D - 1] != row || massL_[i] <= 0) continue;
-            const Real w = nodeFootprint(i);
+            const Real w = nodeFootprint(grid_, i);
             q += w * porosity_[i] * (velL_[i * D + D - 1] - velS_[i * D + D - 1]);
             a += w;
         }
@@ -824,14 +678,11 @@ ColumnState DoublePointSolver<D>::columnState() const {
     }
     s.cumulativeInflow = cumulativeInflow_;
     s.cumulativeOutflow = outflowVolume_;
-    s.injectedVolume = injectedVolume_;
+    s.injectedVolume = chamber_.injectedVolume();
     for (Real m : solid_.mass) s.solidMass += m;
     for (Real m : liquid_.mass) s.liquidMass += m;
-    Real gapVolume = 0;
-    for (Real g : gap_) gapVolume += g;
-    gapVolume *= grid_.footprint();
     const Real stored = (s.liquidMass - initialLiquidMass_) / config_.liquid.density +
-                        gapVolume - initialGapVolume_ * grid_.footprint();
+                        chamber_.gapVolume(grid_) - initialGapVolume_;
     s.ledgerResidual = cumulativeInflow_ - outflowVolume_ - stored;
     s.solidPoints = solid_.size();
     s.liquidPoints = liquid_.size();
@@ -887,7 +738,7 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         }
         Real q = 0, a = 0;
         for (Index i = r * grid_.nodeStride(D - 1); i < (r + 1) * grid_.nodeStride(D - 1); ++i) {
-            const Real wgt = nodeFootprint(i);
+            const Real wgt = nodeFootprint(grid_, i);
             q += wgt * porosity_[i] * (velL_[i * D + D - 1] - velS_[i * D + D - 1]);
             a += wgt;
         }

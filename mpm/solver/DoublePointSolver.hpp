@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+#include "boundary/BoundaryMasks.hpp"
+#include "boundary/InflowChamber.hpp"
 #include "grid/Grid.hpp"
 #include "io/CaseConfig.hpp"
 #include "materials/LinearElastic.hpp"
@@ -110,15 +112,12 @@ private:
 
     // helpers
     void allocate();
-    void buildBoundaryMasks();
     template <class Set>
     void computeShape(Set& set, std::vector<Index>& cellStart, std::vector<Index>& counts);
-    Real lowestLiquidBottom(Index column) const;
-    Real waterSurfaceFromMass() const;
+    Real waterSurface() const;
     Real sandSurface() const;
     Real surchargeNow() const;
     Real gateVelocityNow() const;
-    Real nodeFootprint(Index node) const;
 
     const CaseConfig& config_;
     ReservoirModel& reservoir_;
@@ -137,21 +136,17 @@ private:
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_, velSOld_,
         velLOld_, solidVolume_, nodeVolume_, porosity_, dragA_, dragB_, drag_, relSpeed_;
-    std::vector<char> solidFixed_, liquidFixed_;  // [node][axis]
-    std::vector<Index> gateNodes_, filterNodes_;
-
-    // columns of cells (horizontal positions) for inflow at the chamber
-    std::vector<Real> gap_;          ///< m, empty height below the lowest liquid point per column
-    std::vector<char> dropFlags_;
+    BoundaryMasks<D> masks_;
+    InflowChamber<D> chamber_;
+    std::vector<char> dropFlags_;    ///< scratch of the outflow removal
 
     GateLaw gateLaw_;
     Real dt_ = 0, time_ = 0, waveSpeed_ = 0;
     long steps_ = 0;
     bool damping_ = false;
     Real dampingAlpha_ = 0;
-    Real injectVolume_ = 0;          ///< m3, volume of one injected liquid point
     Real gateFlux_ = 0, gatePressure_ = 0;
-    Real cumulativeInflow_ = 0, injectedVolume_ = 0, outflowVolume_ = 0;
+    Real cumulativeInflow_ = 0, outflowVolume_ = 0;
     Real initialLiquidMass_ = 0, initialGapVolume_ = 0;
     Real surfacePressure_ = 0;
     std::vector<Index> monitorNodes_;

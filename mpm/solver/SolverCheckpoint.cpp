@@ -53,9 +53,9 @@ void DoublePointSolver<D>::saveState(CheckpointData& data) const {
     putSet(data, "solid", self.solid_);
     putSet(data, "liquid", self.liquid_);
     data.put("rel_speed", relSpeed_);
-    data.put("gap", gap_);
+    data.put("gap", const_cast<InflowChamber<D>&>(chamber_).gaps());
     data.put("reservoir", reservoir_.saveState());
-    data.put("ledger", std::vector<double>{cumulativeInflow_, injectedVolume_, outflowVolume_,
+    data.put("ledger", std::vector<double>{cumulativeInflow_, chamber_.injectedVolume(), outflowVolume_,
                                            initialLiquidMass_, initialGapVolume_, gateFlux_,
                                            gatePressure_});
 }
@@ -74,11 +74,11 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     const auto& rs = data.doubles("rel_speed");
     QS_CHECK(rs.size() == relSpeed_.size(), "the checkpoint's grid differs from the case's grid");
     relSpeed_ = rs;
-    gap_ = data.doubles("gap");
+    chamber_.gaps() = data.doubles("gap");
     reservoir_.restoreState(data.doubles("reservoir"));
     const auto& l = data.doubles("ledger");
     cumulativeInflow_ = l.at(0);
-    injectedVolume_ = l.at(1);
+    chamber_.setInjectedVolume(l.at(1));
     outflowVolume_ = l.at(2);
     initialLiquidMass_ = l.at(3);
     initialGapVolume_ = l.at(4);

@@ -1,0 +1,81 @@
+#pragma once
+// Which nodal velocity components are held, per phase (physics.md section 2, boundaries):
+//  - smooth lateral walls: the normal component of both phases (2D/3D);
+//  - the filter plane: the solid's vertical component, both ways (the filter also pulls; a one-way
+//    support lets the whole bed lift off as a plug near i_c);
+//  - the gate plane (chamber bottom): the liquid's vertical component in the flux and closed gate
+//    modes (prescribed velocity, or zero); in the pressure mode it carries the gate traction;
+//  - a rigid skeleton: every solid component.
+// Built once; the nodal update reads the flags. Also knows each gate node's share of the area.
+#include <vector>
+
+#include "grid/Grid.hpp"
+#include "io/CaseConfig.hpp"
+
+namespace qs {
+
+template <int D>
+struct BoundaryMasks {
+    std::vector<char> solidFixed;   ///< [node][axis]
+    std::vector<char> liquidFixed;  ///< [node][axis]
+    std::vector<Index> gateNodes;   ///< the bottom node row (the gate plane)
+    std::vector<Index> filterNodes; ///< the node row of the filter plane
+
+    void build(const Grid<D>& grid, const CaseConfig& config) {
+        const Index nn = grid.numNodes();
+        solidFixed.assign(nn * D, 0);
+        liquidFixed.assign(nn * D, 0);
+        const Index filterRow = static_cast<Index>(std::llround(config.filterLevel() / grid.h()));
+        for (Index i = 0; i < nn; ++i) {
+            const IVec<D> n = grid.nodeCoords(i);
+            for (int d = 0; d < D - 1; ++d) {
+                if (n[d] == 0 || n[d] == grid.nodes(d) - 1) {
+                    solidFixed[i * D + d] = 1;
+                    liquidFixed[i * D + d] = 1;
+                }
+            }
+            if (n[D - 1] == filterRow) {
+                solidFixed[i * D + D - 1] = 1;
+                filterNodes.push_back(i);
+            }
+            if (n[D - 1] == 0) {
+                gateNodes.push_back(i);
+                if (config.gate.mode != GateMode::Pressure) liquidFixed[i * D + D - 1] = 1;
+                solidFixed[i * D + D - 1] = 1;
+            }
+            if (config.initial.rigidSkeleton)
+                for (int d = 0; d < D; ++d) solidFixed[i * D + d] = 1;
+        }
+    }
+};
+
+/// m2, the share of a horizontal plane carried by one node of it (the whole area in 1D): the
+/// integral of the node's shape function over the plane.
+template <int D>
+Real nodeFootprint(const Grid<D>& grid, Index node) {
+    const IVec<D> n = grid.nodeCoords(node);
+    Real a = grid.outOfPlane();
+    for (int d = 0; d < D - 1; ++d) {
+        const bool edge = n[d] == 0 || n[d] == grid.nodes(d) - 1;
+        a *= edge ? 0.5 * grid.h() : grid.h();
+    }
+    return a;
+}
+
+/// Adds the force of a uniform vertical pressure acting downwards on a horizontal surface at
+/// elevation z: F_i = -p N_i(z) A_i on the vertical component (a traction in the weak form).
+template <int D>
+void addSurfaceTraction(const Grid<D>& grid, std::vector<Real>& force, Real z, Real pressure) {
+    const Real h = grid.h();
+    const Index row = std::clamp<Index>(static_cast<Index>(std::floor(z / h)), 0, grid.cells(D - 1) - 1);
+    const Real xi = z / h - row;
+    const Index stride = grid.nodeStride(D - 1);
+    for (Index nz : {row, row + 1}) {
+        const Real N = nz == row ? 1 - xi : xi;
+        if (N == 0) continue;
+        for (Index i = nz * stride; i < (nz + 1) * stride; ++i)
+            force[i * D + D - 1] -= pressure * N * nodeFootprint(grid, i);
+    }
+}
+
+}  // namespace qs

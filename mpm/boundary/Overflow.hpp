@@ -1,0 +1,78 @@
+#pragma once
+// The overflow level at the top of the column (physics.md section 2, outflow): liquid points
+// above it leave the domain and count as outflow (the real test weighs it). Removing whole points
+// makes the water level jump by one point's height; the missing water is put back as a surface
+// pressure rho_L g (z_overflow - z_surface), with z_surface from the liquid mass above a
+// reference plane (the point volumes drift, the mass does not).
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+#include <vector>
+
+#include "core/Error.hpp"
+#include "grid/Grid.hpp"
+#include "points/LiquidPoints.hpp"
+#include "points/PointSet.hpp"
+#include "points/SolidPoints.hpp"
+
+namespace qs {
+
+/// Removes the liquid points above zOverflow; returns their volume of water (m3).
+/// `drop` is the caller's scratch (reserved once, no allocation here).
+template <int D>
+Real removeLiquidAbove(Real zOverflow, Real density, LiquidPoints<D>& liquid, std::vector<char>& drop) {
+    const std::size_t n = liquid.size();
+    drop.resize(n);
+    Real volume = 0;
+    bool any = false;
+    for (std::size_t p = 0; p < n; ++p) {
+        drop[p] = liquid.x[p * D + D - 1] > zOverflow;
+        if (drop[p]) { volume += liquid.mass[p] / density; any = true; }
+    }
+    if (any) compactPoints(liquid, drop);
+    return volume;
+}
+
+/// Solid reaching the overflow means the bed expanded beyond the column: an error naming it.
+template <int D>
+void checkSolidBelow(Real zOverflow, const SolidPoints<D>& solid, Real time, Real sandSurface) {
+    for (std::size_t p = 0; p < solid.size(); ++p) {
+        if (solid.x[p * D + D - 1] <= zOverflow) continue;
+        std::ostringstream s;
+        s << "solid points reached the overflow level column.overflow_level = " << zOverflow
+          << " m at t = " << time << " s (sand surface " << sandSurface
+          << " m): the bed expanded beyond the column; raise the overflow level and the grid top";
+        throw Error(s.str());
+    }
+}
+
+/// m, the free-water surface from the liquid mass above zRef (a plane one cell above the sand);
+/// points straddling the plane count by their fraction. 0 when no liquid is above zRef.
+template <int D>
+Real waterSurfaceFromMass(const Grid<D>& grid, const LiquidPoints<D>& liquid, Real zRef,
+                          Real density, int pointsPerCell) {
+    const Real footprint = grid.footprint() / std::pow(Real(pointsPerCell), D - 1);
+    Real mass = 0;
+    for (std::size_t p = 0; p < liquid.size(); ++p) {
+        const Real z = liquid.x[p * D + D - 1];
+        const Real half = 0.5 * liquid.mass[p] / density / footprint;
+        if (z + half <= zRef) continue;
+        mass += std::min(Real(1), (z + half - zRef) / (2 * half)) * liquid.mass[p];
+    }
+    if (mass == 0) return 0.0;
+    Real columns = 1;
+    for (int d = 0; d < D - 1; ++d) columns *= grid.cells(d);
+    return zRef + mass / (density * grid.footprint() * columns);
+}
+
+/// m, top of the highest solid point (its extent from its volume), at least the filter level.
+template <int D>
+Real sandSurfaceOf(const Grid<D>& grid, const SolidPoints<D>& solid, Real filterLevel, int pointsPerCell) {
+    const Real footprint = grid.footprint() / std::pow(Real(pointsPerCell), D - 1);
+    Real top = filterLevel;
+    for (std::size_t p = 0; p < solid.size(); ++p)
+        top = std::max(top, solid.x[p * D + D - 1] + 0.5 * solid.volume[p] / footprint);
+    return top;
+}
+
+}  // namespace qs
