@@ -4,13 +4,16 @@
 #   bash tools/setup.sh              compiler, CMake, Eigen, HDF5, toml++, GoogleTest/Mock,
 #                                    Google Benchmark, Python plotting
 #   bash tools/setup.sh --openfoam   the same plus Debian's `openfoam` package (OpenFOAM reservoir)
+#                                    and its headers: the source package of the installed version,
+#                                    fetched once into ~/.cache/quicksand/openfoam-src (or
+#                                    $QUICKSAND_CACHE_DIR/openfoam-src) without touching apt's config
 #
 # Idempotent: packages already installed are skipped (checked with dpkg-query), and apt-get
 # update runs only when something is missing, so a second run installs nothing and says so.
 # Uses sudo only when not run as root.
 set -euo pipefail
 
-usage() { sed -n '2,10p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 packages=(cmake g++ make pkg-config libeigen3-dev libhdf5-dev libtomlplusplus-dev
           libgtest-dev libgmock-dev libbenchmark-dev
@@ -38,15 +41,118 @@ as_root() {
     fi
 }
 
-# TODO(OpenFOAM reservoir, later issue): Debian's `openfoam` package ships the libraries
-# (/usr/lib/libOpenFOAM.so, libfiniteVolume, ...) but no headers. foamCoupling/ will need the
-# headers of the same version (Debian source package openfoam 1912.200626-1, fetched with a
-# private deb-src list so the machine's apt configuration stays untouched), unpacked into flat
-# lnInclude/ folders for src/OpenFOAM, src/finiteVolume, src/meshTools, src/OSspecific/POSIX,
-# and their location handed to CMake. See /work/shared/design/openfoam-embedding.md.
+# OpenFOAM headers for foamCoupling/. Debian's `openfoam` package ships the libraries
+# (/usr/lib/libOpenFOAM.so, libfiniteVolume, ...) but no headers, so they come from Debian's
+# source package of exactly the installed version, fetched with apt-get through a private
+# deb-src list, private index and cache directories (the machine's apt configuration and state
+# in /etc/apt, /var/lib/apt and /var/cache/apt stay untouched), and unpacked (src/, META-INFO/,
+# the icoFoam and pimpleFoam solvers and the cavity tutorial only) into
+#     ${QUICKSAND_CACHE_DIR:-$HOME/.cache/quicksand}/openfoam-src/openfoam-<source version>/
+# where cmake/FindOpenFOAM.cmake looks for it (CMake cache variable OPENFOAM_SOURCE_DIR). Once
+# that tree is complete for the installed version nothing is downloaded again. Needs no root.
+# QUICKSAND_DEBIAN_MIRROR overrides the archive (default http://deb.debian.org/debian).
+# See /work/shared/design/openfoam-embedding.md.
 setup_openfoam_headers() {
-    echo "setup.sh: TODO: OpenFOAM headers for foamCoupling/ are not set up yet;" \
-         "the build will not include the OpenFOAM reservoir." >&2
+    local cache="${QUICKSAND_CACHE_DIR:-$HOME/.cache/quicksand}/openfoam-src"
+    local srcver
+    srcver="$(dpkg-query -W -f='${source:Version}' openfoam 2>/dev/null || true)"
+    if [[ -z "$srcver" ]]; then
+        echo "setup.sh: the openfoam package is not installed; cannot fetch its headers." >&2
+        return 1
+    fi
+    local upstream="${srcver#*:}"            # drop an epoch, if any
+    local tree="$cache/openfoam-$upstream"
+    # What is unpacked: the library sources (headers and templates), the version files, the two
+    # incompressible solvers foamCoupling/ follows and the cavity tutorial (a small test case).
+    local parts=(src META-INFO applications/solvers/incompressible/icoFoam
+                 applications/solvers/incompressible/pimpleFoam
+                 tutorials/incompressible/icoFoam/cavity)
+    local stamp="$srcver ${parts[*]}"
+    if [[ -f "$tree/.quicksand-complete" && "$(cat "$tree/.quicksand-complete")" == "$stamp" ]]; then
+        echo "setup.sh: OpenFOAM $srcver sources already in $tree; nothing to download."
+        return 0
+    fi
+
+    # Private apt: sources, indexes, cache and lock all below $cache/apt.
+    local codename mirror
+    codename="$(. /etc/os-release 2>/dev/null && [[ "${ID:-}" == debian ]] && echo "${VERSION_CODENAME:-}" || true)"
+    codename="${codename:-bookworm}"
+    mirror="${QUICKSAND_DEBIAN_MIRROR:-http://deb.debian.org/debian}"
+    local aptdir="$cache/apt"
+    mkdir -p "$aptdir/sources.list.d" "$aptdir/lists/partial" "$aptdir/cache/archives/partial" \
+             "$aptdir/download"
+    cat > "$aptdir/sources.list.d/quicksand-openfoam-src.list" <<EOF_SOURCES
+# Written by quicksand's tools/setup.sh; used only through apt-get -o Dir::Etc::SourceParts.
+deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] $mirror $codename main
+deb-src [signed-by=/usr/share/keyrings/debian-archive-keyring.gpg] $mirror $codename-updates main
+EOF_SOURCES
+    # The hooks the machine's apt.conf.d runs after an update (AppStream, PackageKit) concern the
+    # machine's own indexes, not this private one: cleared through a private config file.
+    cat > "$aptdir/apt.conf" <<'EOF_CONF'
+// Written by quicksand's tools/setup.sh; read through apt-get -c for the private source fetch.
+#clear APT::Update::Pre-Invoke;
+#clear APT::Update::Post-Invoke;
+#clear APT::Update::Post-Invoke-Success;
+EOF_CONF
+    local apt_opts=(-q -c "$aptdir/apt.conf"
+        -o Dir::Etc::SourceList=/dev/null
+        -o Dir::Etc::SourceParts="$aptdir/sources.list.d"
+        -o Dir::State::Lists="$aptdir/lists"
+        -o Dir::Cache="$aptdir/cache"
+        -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache=
+        -o APT::Sandbox::User="$(id -un)")
+
+    echo "setup.sh: fetching Debian's source package openfoam=$srcver (headers for foamCoupling/)"
+    echo "setup.sh:   private apt state in $aptdir (deb-src $mirror $codename and $codename-updates, main)"
+    apt-get "${apt_opts[@]}" update
+    rm -f "$aptdir/download/"*
+    (cd "$aptdir/download" && apt-get "${apt_opts[@]}" source --download-only "openfoam=$srcver")
+
+    local orig debtar
+    orig="$(ls "$aptdir/download/"*.orig.tar.* 2>/dev/null | head -n 1 || true)"
+    debtar="$(ls "$aptdir/download/"*.debian.tar.* 2>/dev/null | head -n 1 || true)"
+    if [[ -z "$orig" ]]; then
+        echo "setup.sh: apt-get source gave no .orig tarball for openfoam=$srcver" >&2
+        return 1
+    fi
+    local tmp="$tree.partial"
+    rm -rf "$tmp" "$tree"
+    mkdir -p "$tmp"
+    # Debian's patches for this version; if any touches src/ the whole package is unpacked with
+    # dpkg-source (patches applied), otherwise src/ straight from the orig tarball is the same.
+    local patches_touch_src=false
+    if [[ -n "$debtar" ]] && tar -xf "$debtar" -C "$tmp" debian/patches 2>/dev/null; then
+        if grep -qsE '^\+\+\+ [^/]+/src/' "$tmp"/debian/patches/*; then patches_touch_src=true; fi
+    fi
+    rm -rf "$tmp/debian"
+    if $patches_touch_src; then
+        echo "setup.sh:   Debian's patches touch src/: unpacking with dpkg-source -x"
+        local full="$tmp/full"
+        dpkg-source --no-check -x "$aptdir/download/"*.dsc "$full" >/dev/null
+        for part in "${parts[@]}"; do
+            if [[ -e "$full/$part" ]]; then
+                mkdir -p "$tmp/$(dirname "$part")"
+                mv "$full/$part" "$tmp/$part"
+            fi
+        done
+        rm -rf "$full"
+    else
+        echo "setup.sh:   unpacking ${parts[*]} from $(basename "$orig")"
+        local top
+        top="$(tar -tf "$orig" | head -n 1 | cut -d/ -f1 || true)"
+        local members=()
+        for part in "${parts[@]}"; do members+=("$top/$part"); done
+        tar -xf "$orig" -C "$tmp" --strip-components=1 --no-same-owner "${members[@]}"
+    fi
+    if [[ ! -f "$tmp/src/OpenFOAM/db/Time/Time.H" ]]; then
+        echo "setup.sh: unpacking openfoam=$srcver did not give src/OpenFOAM; see $tmp" >&2
+        return 1
+    fi
+    echo "$stamp" > "$tmp/.quicksand-complete"
+    mv "$tmp" "$tree"
+    # The tree is the cache: the downloads and indexes are not needed any more.
+    rm -rf "$aptdir/download" "$aptdir/lists" "$aptdir/cache"
+    echo "setup.sh: OpenFOAM $srcver sources in $tree ($(du -sh "$tree" | cut -f1))"
 }
 
 missing=()

@@ -31,10 +31,9 @@ double expectedSteadyFilterVelocity(const CaseConfig& config) {
         }
         return h;
     };
-    double lo = std::min(0.0, dh), hi = std::max(0.0, dh);
-    double qlo = -1.0, qhi = 1.0;
-    (void)lo; (void)hi;
-    for (int k = 0; k < 200; ++k) {  // bisection: loss(q) is monotonic
+    if (dh == 0) return 0.0;
+    double qlo = -1.0, qhi = 1.0;  // m/s, far beyond any seepage velocity
+    for (int k = 0; k < 200; ++k) {  // bisection: loss(q) increases monotonically
         const double q = 0.5 * (qlo + qhi);
         (loss(q) < dh ? qlo : qhi) = q;
     }
