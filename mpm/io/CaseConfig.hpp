@@ -25,6 +25,7 @@ enum class ConstitutiveModel { LinearElastic, MohrCoulomb };
 enum class InitialStress { K0, Zero };
 enum class GateMode { Pressure, Flux, Closed };
 enum class ReservoirKind { ConstantHead, Lumped, OpenFoam };
+enum class CouplingKind { Explicit, Implicit };
 
 struct GridConfig {
     int dimension = 1;                 ///< 1, 2 or 3 (only 1 is verified)
@@ -107,14 +108,24 @@ struct GateConfig {
 struct ReservoirConfig {
     ReservoirKind kind = ReservoirKind::ConstantHead;
     double head = 0.0;                 ///< m, elevation of the reservoir surface above the gate
+                                       ///<    plane (the initial level for Lumped and OpenFoam)
     double headRate = 0.0;             ///< m/s, linear change of the head (ConstantHead)
-    double area = 0.0;                 ///< m2, reservoir plan area (Lumped)
+    double area = 0.0;                 ///< m2, reservoir plan area (Lumped, OpenFoam)
     double tubeDiameter = 0.0;         ///< m, U-tube inner diameter (Lumped; 0: no tube)
     double tubeLength = 0.0;           ///< m, U-tube length (Lumped)
     double minorLoss = 0.0;            ///< -, sum of minor-loss coefficients (Lumped)
     std::string openfoamCase;          ///< path of the OpenFOAM case directory (OpenFoam)
     std::string gatePatch = "gate";    ///< OpenFOAM patch coupled to the gate
     std::string reservoirPatch = "reservoir";  ///< OpenFOAM patch carrying the reservoir level
+};
+
+/// How the MPM and a windowed reservoir model (OpenFOAM) exchange flux and pressure.
+struct CouplingConfig {
+    CouplingKind scheme = CouplingKind::Implicit;
+    double window = 1e-3;              ///< s, coupling window = the CFD time step (>= MPM dt)
+    double tolerance = 1e-3;           ///< -, implicit: |flux residual| / |flux| to accept a window
+    int maxIterations = 30;            ///< implicit: iterations per window before giving up
+    double relaxation = 0.5;           ///< -, implicit: first Aitken relaxation factor, (0, 1]
 };
 
 struct TimeConfig {
@@ -150,6 +161,7 @@ struct CaseConfig {
     LoadConfig loads;
     GateConfig gate;
     ReservoirConfig reservoir;
+    CouplingConfig coupling;
     TimeConfig time;
     std::vector<MonitorConfig> monitors;
     OutputConfig output;

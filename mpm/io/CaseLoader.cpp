@@ -26,7 +26,8 @@ namespace {
 
 constexpr const char* kRootKeys[] = {"title",  "grid",      "column",  "materials", "layers",
                                      "liquid", "points",    "gravity", "initial",   "loads",
-                                     "gate",   "reservoir", "time",    "monitors",  "output"};
+                                     "gate",   "reservoir", "coupling", "time",   "monitors",
+                                     "output"};
 constexpr const char* kGridKeys[] = {"dimension", "cell_size", "width", "cross_section_area",
                                      "shape_functions"};
 constexpr const char* kColumnKeys[] = {"chamber_height", "water_level", "overflow_level", "top"};
@@ -50,6 +51,8 @@ constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
 constexpr const char* kReservoirKeys[] = {
     "model",       "head",       "head_rate",     "area",       "tube_diameter",
     "tube_length", "minor_loss", "openfoam_case", "gate_patch", "reservoir_patch"};
+constexpr const char* kCouplingKeys[] = {"scheme", "window", "tolerance", "max_iterations",
+                                         "relaxation"};
 constexpr const char* kTimeKeys[] = {
     "end", "courant", "dt", "output_interval", "checkpoint_interval"};
 constexpr const char* kMonitorKeys[] = {"name", "elevation"};
@@ -82,13 +85,15 @@ const TableKeys kInitial = tableKeys("[initial]", kInitialKeys);
 const TableKeys kLoads = tableKeys("[loads]", kLoadsKeys);
 const TableKeys kGate = tableKeys("[gate]", kGateKeys);
 const TableKeys kReservoir = tableKeys("[reservoir]", kReservoirKeys);
+const TableKeys kCoupling = tableKeys("[coupling]", kCouplingKeys);
 const TableKeys kTime = tableKeys("[time]", kTimeKeys);
 const TableKeys kMonitor = tableKeys("[[monitors]]", kMonitorKeys);
 const TableKeys kOutput = tableKeys("[output]", kOutputKeys);
 
 const TableKeys* const kAllTables[] = {&kRoot,  &kGrid,      &kColumn, &kMaterial, &kPermeability,
                                        &kLayer, &kLiquid,    &kPoints, &kInitial,  &kLoads,
-                                       &kGate,  &kReservoir, &kTime,   &kMonitor,  &kOutput};
+                                       &kGate,  &kReservoir, &kCoupling, &kTime, &kMonitor,
+                                       &kOutput};
 
 /// Largest intrinsic permeability accepted (m2). Clean gravel is ~1e-7 m2; larger values are
 /// almost always a hydraulic conductivity in m/s typed where kappa in m2 belongs.
@@ -474,6 +479,8 @@ const Options<InitialStress> kStressOptions = {{"k0", InitialStress::K0},
                                                {"zero", InitialStress::Zero}};
 const Options<GateMode> kGateOptions = {
     {"pressure", GateMode::Pressure}, {"flux", GateMode::Flux}, {"closed", GateMode::Closed}};
+const Options<CouplingKind> kCouplingOptions = {{"explicit", CouplingKind::Explicit},
+                                                   {"implicit", CouplingKind::Implicit}};
 const Options<ReservoirKind> kReservoirOptions = {{"constant_head", ReservoirKind::ConstantHead},
                                                   {"lumped", ReservoirKind::Lumped},
                                                   {"openfoam", ReservoirKind::OpenFoam}};
@@ -530,6 +537,7 @@ public:
         readInitial(root);  // after the loads: undrained_surcharge needs a surcharge
         readGate(root);
         readReservoir(root);  // after the gate: the reservoir matters only for a pressure gate
+        readCoupling(root);
         readTime(root);
         readMonitors(root);
         readOutput(root);
@@ -842,9 +850,11 @@ private:
                 }
                 break;
             case ReservoirKind::OpenFoam: {
-                for (const char* key :
-                     {"head", "head_rate", "area", "tube_diameter", "tube_length", "minor_loss"})
-                    s.forbid(key, notHere + " (the OpenFOAM case holds the reservoir)");
+                for (const char* key : {"head_rate", "tube_diameter", "tube_length", "minor_loss"})
+                    s.forbid(key, notHere + " (the OpenFOAM case holds the tube)");
+                readHead();
+                r.area = s.requiredNumber("area", positive("m2"),
+                                          "plan area of the reservoir (its level balance)");
                 const std::string given = s.requiredString(
                     "openfoam_case",
                     "the path of the OpenFOAM case directory, relative to the case directory");
@@ -896,6 +906,28 @@ private:
                                  "within the grid, from the gate (0) to column.top");
             c_.monitors.push_back(m);
             lines.push_back(s.line());
+        }
+    }
+
+    void readCoupling(const Section& root) {
+        if (c_.reservoir.kind != ReservoirKind::OpenFoam) {
+            if (root.has("coupling"))
+                root.fail("coupling", "[coupling] applies only to reservoir.model = \"openfoam\" "
+                                      "(the built-in reservoirs are advanced every MPM step)");
+            return;
+        }
+        const Section s = root.subsection("coupling", kCoupling, false);
+        CouplingConfig& k = c_.coupling;
+        k.scheme = s.choice("scheme", CouplingKind::Implicit, kCouplingOptions);
+        k.window = s.optionalNumber("window", 1e-3, positive("s"), "the CFD time step");
+        const bool implicit = k.scheme == CouplingKind::Implicit;
+        const std::string why = "it applies only to scheme = \"implicit\"";
+        if (implicit) {
+            k.tolerance = s.optionalNumber("tolerance", 1e-3, between(0, false, 1, false));
+            k.maxIterations = s.integer("max_iterations", 30, between(1, false, 1000, false));
+            k.relaxation = s.optionalNumber("relaxation", 0.5, between(0, false, 1, true));
+        } else {
+            for (const char* key : {"tolerance", "max_iterations", "relaxation"}) s.forbid(key, why);
         }
     }
 

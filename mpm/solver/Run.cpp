@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -11,6 +12,8 @@
 #include "io/Checkpoint.hpp"
 #include "io/FieldWriter.hpp"
 #include "io/SeriesWriter.hpp"
+#include "coupling/CouplingScheme.hpp"
+#include "reservoir/ConstantHead.hpp"
 #include "reservoir/ReservoirModel.hpp"
 
 namespace qs {
@@ -68,36 +71,127 @@ std::string formatDuration(double s) {
     return buf;
 }
 
+/// Moves an earlier output directory aside (output.previous) and creates a fresh one.
+void freshOutputDirectory(const fs::path& outDir) {
+    if (fs::exists(outDir)) {
+        const fs::path previous = outDir.string() + ".previous";
+        fs::remove_all(previous);
+        fs::rename(outDir, previous);
+    }
+    fs::create_directories(outDir);
+}
+
+/// Advances the solver, either step by step (built-in reservoirs, advanced inside each step) or
+/// window by window through a coupling scheme (windowed models such as OpenFOAM).
+class Advancer {
+public:
+    virtual ~Advancer() = default;
+    virtual void advance(double end) = 0;
+    virtual void save(CheckpointData&) const {}
+    virtual void load(const CheckpointData&) {}
+    virtual std::string summary() const { return ""; }
+};
+
+template <int D>
+class StepAdvancer final : public Advancer {
+public:
+    explicit StepAdvancer(DoublePointSolver<D>& s) : s_(s) {}
+    void advance(double) override { s_.step(); }
+
+private:
+    DoublePointSolver<D>& s_;
+};
+
+template <int D>
+class WindowAdvancer final : public Advancer {
+public:
+    WindowAdvancer(DoublePointSolver<D>& s, WindowedModel& model, CouplingInterface& gate,
+                   const CouplingConfig& config, std::ostream* log)
+        : mpm_(s), model_(model), scheme_(makeCouplingScheme(config, model, gate, log)) {}
+    void advance(double end) override { scheme_->advanceWindow(mpm_, end); }
+    void save(CheckpointData& d) const override {
+        d.put("coupling_scheme", scheme_->saveState());
+        d.put("coupling_model", model_.saveState());
+    }
+    void load(const CheckpointData& d) override {
+        scheme_->restoreState(d.doubles("coupling_scheme"));
+        model_.restoreState(d.doubles("coupling_model"));
+    }
+    std::string summary() const override {
+        const auto& st = scheme_->stats();
+        char buf[320];
+        const double total = st.modelSeconds + st.mpmSeconds;
+        std::snprintf(buf, sizeof buf,
+                      "coupling: %ld windows, %ld model solves, %.2f iterations/window, %ld "
+                      "unconverged; model %.3g s (%.1f %% of coupled time), MPM %.3g s",
+                      st.windows, st.modelSolves,
+                      st.windows > 0 ? double(st.modelSolves) / st.windows : 0.0, st.unconverged,
+                      st.modelSeconds, total > 0 ? 100 * st.modelSeconds / total : 0.0, st.mpmSeconds);
+        return buf;
+    }
+    const CouplingStats& stats() const { return scheme_->stats(); }
+
+private:
+    MpmAdapter<DoublePointSolver<D>> mpm_;
+    WindowedModel& model_;
+    std::unique_ptr<CouplingScheme> scheme_;
+};
+
 template <int D>
 RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     using Clock = std::chrono::steady_clock;
-    auto reservoir = makeReservoirModel(config);
-    DoublePointSolver<D> solver(config, *reservoir);  // validates the geometry before any output
-
     const double end = options.endTime >= 0 ? options.endTime : config.time.end;
     const fs::path outDir = fs::path(config.caseDirectory) / config.output.directory;
     const fs::path checkpointPath = outDir / "checkpoint.h5";
-    std::unique_ptr<SeriesWriter> series;
-    std::unique_ptr<FieldWriter> fields;
+    const bool windowed = options.windowedModel || config.reservoir.kind == ReservoirKind::OpenFoam;
 
-    if (options.resume) {
+    // Validate everything that can be validated before touching an earlier output directory.
+    std::unique_ptr<ReservoirModel> builtIn;
+    if (!windowed) builtIn = makeReservoirModel(config);
+    else { ConstantHead probe(config.liquid.density, config.gravity, 0.0); DoublePointSolver<D> check(config, probe); }
+    if (options.resume)
         QS_CHECK(fs::exists(checkpointPath),
                  "cannot resume: no checkpoint at " << checkpointPath.string()
                                                     << " (run without --resume first)");
-        solver.loadState(readCheckpoint(checkpointPath.string()));
+    if (options.writeFiles && !options.resume) freshOutputDirectory(outDir);
+
+    // A windowed model (OpenFOAM) works in the output directory.
+    std::unique_ptr<WindowedModel> ownedModel;
+    WindowedModel* model = options.windowedModel;
+    if (windowed && !model) {
+        ownedModel = makeOpenFoamModel(config);
+        model = ownedModel.get();
+    }
+    std::unique_ptr<CouplingInterface> gate;
+    if (windowed) gate = std::make_unique<CouplingInterface>(*model);
+    ReservoirModel& reservoir = windowed ? static_cast<ReservoirModel&>(*gate) : *builtIn;
+    DoublePointSolver<D> solver(config, reservoir);
+
+    std::ofstream couplingLog;
+    if (windowed && options.writeFiles)
+        couplingLog.open(outDir / "coupling.log", options.resume ? std::ios::app : std::ios::trunc);
+    std::unique_ptr<Advancer> advancer;
+    WindowAdvancer<D>* windowAdvancer = nullptr;
+    if (windowed) {
+        auto w = std::make_unique<WindowAdvancer<D>>(solver, *model, *gate, config.coupling,
+                                                     couplingLog.is_open() ? &couplingLog : nullptr);
+        windowAdvancer = w.get();
+        advancer = std::move(w);
+    } else {
+        advancer = std::make_unique<StepAdvancer<D>>(solver);
+    }
+
+    if (options.resume) {
+        const CheckpointData data = readCheckpoint(checkpointPath.string());
+        solver.loadState(data);
+        advancer->load(data);
     } else {
         solver.runGravityStage();
     }
+
+    std::unique_ptr<SeriesWriter> series;
+    std::unique_ptr<FieldWriter> fields;
     if (options.writeFiles) {
-        if (!options.resume) {
-            // keep the previous results instead of overwriting them
-            if (fs::exists(outDir)) {
-                const fs::path previous = outDir.string() + ".previous";
-                fs::remove_all(previous);
-                fs::rename(outDir, previous);
-            }
-            fs::create_directories(outDir);
-        }
         series = std::make_unique<SeriesWriter>((outDir / "series.csv").string(),
                                                 seriesColumns(config), options.resume,
                                                 solver.time());
@@ -115,13 +209,14 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
         const ColumnState s = solver.columnState();
         if (series) series->write(seriesRow(s));
         if (fields) writeFields(*fields, solver);
-        reservoir->writeOutput(s.time);
+        reservoir.writeOutput(s.time);
         if (options.onOutput) options.onOutput(s, solver.profile());
     };
     auto checkpoint = [&]() {
         if (!options.writeFiles) return;
         CheckpointData data;
         solver.saveState(data);
+        advancer->save(data);
         writeCheckpoint(checkpointPath.string(), data);
     };
 
@@ -133,15 +228,17 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     const double half = 0.5 * solver.dt();
     if (!options.quiet)
         std::printf("quicksand: %dD, dt = %.3g s (c_fast = %.1f m/s), %zu solid + %zu liquid points, "
-                    "t = %.4g -> %.4g s\n",
+                    "t = %.4g -> %.4g s%s\n",
                     D, solver.dt(), solver.waveSpeed(), solver.solid().size(),
-                    solver.liquid().size(), solver.time(), end);
+                    solver.liquid().size(), solver.time(), end,
+                    windowed ? (", coupled to " + model->name()).c_str() : "");
     while (solver.time() < end - half) {
-        solver.step();
-        pointSteps += double(solver.solid().size() + solver.liquid().size());
+        const long before = solver.stepCount();
+        advancer->advance(end);
+        pointSteps += double(solver.stepCount() - before) * double(solver.solid().size() + solver.liquid().size());
         if (solver.time() >= nextOutput - half) {
             output();
-            nextOutput += interval;
+            while (nextOutput <= solver.time() + half) nextOutput += interval;
         }
         if (solver.time() >= nextCheckpoint - half) {
             checkpoint();
@@ -171,10 +268,16 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     r.pointUpdatesPerSecond = r.wallSeconds > 0 ? pointSteps / r.wallSeconds : 0;
     r.dt = solver.dt();
     r.outputDirectory = outDir.string();
-    if (!options.quiet)
+    if (windowAdvancer) {
+        r.coupling = windowAdvancer->stats();
+        r.couplingSummary = windowAdvancer->summary();
+    }
+    if (!options.quiet) {
         std::printf("quicksand: done, %ld steps in %s (%.3g point updates/s); results in %s\n",
                     r.steps, formatDuration(r.wallSeconds).c_str(), r.pointUpdatesPerSecond,
                     options.writeFiles ? outDir.string().c_str() : "(memory)");
+        if (!r.couplingSummary.empty()) std::printf("quicksand: %s\n", r.couplingSummary.c_str());
+    }
     return r;
 }
 

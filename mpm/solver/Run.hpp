@@ -4,6 +4,10 @@
 //   CaseConfig config = loadCase("cases/verification/geostatic");
 //   RunSummary s = runCase(config, RunOptions{});
 //
+// A built-in reservoir (constant head, lumped) is advanced inside every MPM step; a windowed
+// model (OpenFOAM) through the coupling scheme of [coupling], window by window, with the
+// iterations logged to output/coupling.log.
+//
 // Output goes to CASE/output (case key output.directory): series.csv every output interval,
 // fields.h5 + fields.xdmf, checkpoint.h5 at every checkpoint interval and at the end. A previous
 // output directory is kept as output.previous; a run that fails before its first step (bad
@@ -11,6 +15,8 @@
 #include <functional>
 #include <string>
 
+#include "coupling/CouplingScheme.hpp"
+#include "coupling/WindowedModel.hpp"
 #include "io/CaseConfig.hpp"
 #include "solver/DoublePointSolver.hpp"
 
@@ -24,6 +30,9 @@ struct RunOptions {
     /// Called at every output time with the column's state and cell-row profile (tests watch a
     /// run through it).
     std::function<void(const ColumnState&, const std::vector<CellRow>&)> onOutput;
+    /// A windowed reservoir model to couple to instead of the case's reservoir (not owned; tests
+    /// couple the InertialTubeModel this way). reservoir.model = "openfoam" makes one itself.
+    WindowedModel* windowedModel = nullptr;
 };
 
 struct RunSummary {
@@ -34,6 +43,8 @@ struct RunSummary {
     double pointUpdatesPerSecond = 0;  ///< (solid + liquid points) x steps / wall time
     double dt = 0;
     std::string outputDirectory;
+    CouplingStats coupling;       ///< windowed models only
+    std::string couplingSummary;  ///< one line: windows, iterations, share of the model's time
 };
 
 RunSummary runCase(const CaseConfig& config, const RunOptions& options);

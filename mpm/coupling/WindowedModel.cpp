@@ -1,0 +1,25 @@
+#include "coupling/WindowedModel.hpp"
+
+#include "core/Error.hpp"
+
+namespace qs {
+
+namespace {
+WindowedModelFactory& openFoamFactory() {
+    static WindowedModelFactory factory;
+    return factory;
+}
+}  // namespace
+
+void registerOpenFoamModel(WindowedModelFactory factory) { openFoamFactory() = std::move(factory); }
+
+std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config) {
+    if (!openFoamFactory())
+        throw Error(
+            "case.toml: key 'reservoir.model': \"openfoam\" needs a quicksand build with OpenFOAM; "
+            "this build has none. Install it with tools/setup.sh --openfoam and rebuild, or use "
+            "\"constant_head\" or \"lumped\".");
+    return openFoamFactory()(config);
+}
+
+}  // namespace qs
