@@ -127,7 +127,7 @@ EOF_CONF
     rm -rf "$tmp/debian"
     if $patches_touch_src; then
         echo "setup.sh:   Debian's patches touch src/: unpacking with dpkg-source -x"
-        local full="$tmp/full"
+        local full="$aptdir/download/full"   # beside the .dsc, so nothing is copied
         dpkg-source --no-check -x "$aptdir/download/"*.dsc "$full" >/dev/null
         for part in "${parts[@]}"; do
             if [[ -e "$full/$part" ]]; then

@@ -589,19 +589,27 @@ TEST_F(CaseDirectoryTest, LoadCaseNamesTheFileInErrors) {
 
 TEST_F(CaseDirectoryTest, OpenFoamCaseIsResolvedAgainstTheCaseDirectory) {
     std::filesystem::create_directories(dir_ / "reservoir");
-    const std::string text =
-        replaced(kMinimal, "head = 0.15", "model = \"openfoam\"\nopenfoam_case = \"reservoir\"");
+    const std::string ofKeys = "model = \"openfoam\"\nopenfoam_case = \"reservoir\"\nhead = 0.15\narea = 0.01";
+    const std::string text = replaced(kMinimal, "head = 0.15", ofKeys);
     const CaseConfig c = parseCase(text, kFile, dir_.string());
     EXPECT_EQ(c.reservoir.kind, ReservoirKind::OpenFoam);
     EXPECT_EQ(std::filesystem::path(c.reservoir.openfoamCase),
               std::filesystem::absolute(dir_ / "reservoir").lexically_normal());
-    const std::string missing =
-        replaced(kMinimal, "head = 0.15", "model = \"openfoam\"\nopenfoam_case = \"nowhere\"");
+    EXPECT_EQ(c.coupling.scheme, CouplingKind::Implicit);  // the default
+    const std::string missing = replaced(text, "openfoam_case = \"reservoir\"", "openfoam_case = \"nowhere\"");
     EXPECT_THROW(parseCase(missing, kFile, dir_.string()), InputError);
-    const std::string head =
-        replaced(kMinimal, "head = 0.15",
-                 "model = \"openfoam\"\nopenfoam_case = \"reservoir\"\nhead = 0.15");
-    EXPECT_THROW(parseCase(head, kFile, dir_.string()), InputError);
+    // the level balance needs the reservoir's area; a tube belongs to the OpenFOAM case
+    EXPECT_THROW(parseCase(replaced(text, "area = 0.01", ""), kFile, dir_.string()), InputError);
+    EXPECT_THROW(parseCase(replaced(text, "area = 0.01", "area = 0.01\ntube_diameter = 0.01"), kFile,
+                           dir_.string()),
+                 InputError);
+    // [coupling]: explicit takes no iteration keys; the table is only for OpenFOAM
+    const std::string expl = text + "\n[coupling]\nscheme = \"explicit\"\nwindow = 0.002\n";
+    const CaseConfig e = parseCase(expl, kFile, dir_.string());
+    EXPECT_EQ(e.coupling.scheme, CouplingKind::Explicit);
+    EXPECT_DOUBLE_EQ(e.coupling.window, 0.002);
+    EXPECT_THROW(parseCase(expl + "tolerance = 1e-4\n", kFile, dir_.string()), InputError);
+    EXPECT_THROW(parseCase(kMinimal + "\n[coupling]\nscheme = \"explicit\"\n", kFile, dir_.string()), InputError);
 }
 
 }  // namespace
