@@ -148,10 +148,11 @@ else()
   set(OPENFOAM_FLAVOUR debian)
   find_library(OPENFOAM_LIBRARY NAMES OpenFOAM PATHS /usr/lib /usr/lib/openfoam
                NO_DEFAULT_PATH DOC "Debian's libOpenFOAM.so")
-  find_program(_of_dpkg_query dpkg-query)
+  find_program(OPENFOAM_DPKG_QUERY dpkg-query)
+  mark_as_advanced(OPENFOAM_LIBRARY OPENFOAM_DUMMY_PSTREAM_LIBRARY OPENFOAM_DPKG_QUERY)
   set(OPENFOAM_PACKAGE_VERSION "")
-  if(_of_dpkg_query)
-    execute_process(COMMAND "${_of_dpkg_query}" -W "-f=\${source:Version}" libopenfoam
+  if(OPENFOAM_DPKG_QUERY)
+    execute_process(COMMAND "${OPENFOAM_DPKG_QUERY}" -W "-f=\${source:Version}" libopenfoam
                     OUTPUT_VARIABLE OPENFOAM_PACKAGE_VERSION ERROR_QUIET
                     OUTPUT_STRIP_TRAILING_WHITESPACE)
   endif()
@@ -169,10 +170,11 @@ else()
     else()
       set(_of_reason "libraries in ${OPENFOAM_LIBRARY_DIR} but no headers for version '${OPENFOAM_PACKAGE_VERSION}' in ${OPENFOAM_SOURCE_DIR} (run bash tools/setup.sh --openfoam)")
     endif()
-    find_file(_of_dummy_pstream libPstream.so PATHS "${OPENFOAM_LIBRARY_DIR}/dummy" /usr/lib/dummy
-              NO_DEFAULT_PATH NO_CACHE)
-    if(_of_dummy_pstream)
-      get_filename_component(OPENFOAM_DUMMY_PSTREAM_DIR "${_of_dummy_pstream}" DIRECTORY)
+    find_file(OPENFOAM_DUMMY_PSTREAM_LIBRARY libPstream.so
+              PATHS "${OPENFOAM_LIBRARY_DIR}/dummy" /usr/lib/dummy NO_DEFAULT_PATH
+              DOC "OpenFOAM's serial (no MPI) libPstream.so")
+    if(OPENFOAM_DUMMY_PSTREAM_LIBRARY)
+      get_filename_component(OPENFOAM_DUMMY_PSTREAM_DIR "${OPENFOAM_DUMMY_PSTREAM_LIBRARY}" DIRECTORY)
     else()
       set(OPENFOAM_DUMMY_PSTREAM_DIR "")
     endif()
@@ -222,6 +224,7 @@ if(_of_reason STREQUAL "")
   endif()
   find_program(OPENFOAM_BLOCKMESH blockMesh HINTS "$ENV{FOAM_APPBIN}" /usr/bin
                DOC "OpenFOAM's blockMesh")
+  mark_as_advanced(OPENFOAM_BLOCKMESH)
 else()
   set(OPENFOAM_INCLUDE_DIRS "")
 endif()

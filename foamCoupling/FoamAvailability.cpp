@@ -1,6 +1,19 @@
 #include "FoamAvailability.hpp"
 
+#ifdef QUICKSAND_WITH_OPENFOAM
+#include "FoamReservoir.hpp"
+#endif
+
 namespace qs::foam {
+
+#ifdef QUICKSAND_WITH_OPENFOAM
+bool available() { return true; }
+void registerFoamCoupling() {
+    registerOpenFoamModel([](const CaseConfig& c) { return std::make_unique<FoamReservoir>(c); });
+}
+#else
 bool available() { return false; }
-void registerFoamCoupling() {}
+void registerFoamCoupling() {}  // reservoir.model = "openfoam" then names the missing OpenFOAM
+#endif
+
 }  // namespace qs::foam

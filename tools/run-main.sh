@@ -19,7 +19,7 @@ if [[ ! -f "$main_case/case.toml" ]]; then
     exit 1
 fi
 
-bash tools/build.sh
+bash tools/build.sh --openfoam
 
 "$build_dir/mpm/quicksand" run "$main_case"
 

@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-bash tools/build.sh
+bash tools/build.sh --openfoam   # CI runs the OpenFOAM tests too
 
 build_dir="${QUICKSAND_BUILD_DIR:-build}"
 log="$(mktemp)"

@@ -71,7 +71,10 @@ void ImplicitCoupling::solveWindow(MpmSide& mpm, double t0, double dt) {
     mpm.save(start);
     // predictor: linear extrapolation of the accepted window fluxes
     double flux = 2 * lastFlux_ - previousFlux_;
-    double omega = config_.relaxation, rPrev = 0, pEnd = lastPressure_, mpmFlux = flux;
+    // the first relaxation of a window: the last window's converged Aitken factor (the coupled
+    // problem changes slowly), else the configured one
+    double omega = aitken_ > 0 ? aitken_ : config_.relaxation;
+    double rPrev = 0, pEnd = lastPressure_, mpmFlux = flux;
     double solvedFlux = flux;  // the flux of the last model solve: the pair accepted at the end
     bool converged = false;
     int k = 0;
@@ -89,6 +92,7 @@ void ImplicitCoupling::solveWindow(MpmSide& mpm, double t0, double dt) {
                   << stats_.lastResidual << " omega " << omega << "\n";
         if (stats_.lastResidual <= config_.tolerance) { converged = true; break; }
         if (k > 0 && r != rPrev) omega = -omega * rPrev / (r - rPrev);  // Aitken (scalar form)
+        if (omega > 0 && omega <= 1) aitken_ = omega;
         flux += omega * r;
         rPrev = r;
     }

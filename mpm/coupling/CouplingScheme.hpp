@@ -19,6 +19,8 @@
 // the MPM's mean flux equals the flux the model was solved with (relative tolerance), the flux
 // updated by Aitken's dynamic relaxation
 //   omega_k = -omega_{k-1} r_{k-1} (r_k - r_{k-1}) / |r_k - r_{k-1}|^2,  Q_{k+1} = Q_k + omega_k r_k.
+// Each window starts from the last window's Aitken factor (the coupled problem changes slowly;
+// with a heavy tube the factor is ~1e-3 and restarting from 0.5 costs several iterations).
 // Stable where explicit fails; costs the iterations' model solves and MPM steps.
 #include <iosfwd>
 #include <memory>
@@ -95,6 +97,7 @@ protected:
     double lastFlux_ = 0;       ///< m3/s, accepted mean flux of the last window
     double previousFlux_ = 0;   ///< m3/s, the one before (for the implicit predictor)
     double lastPressure_ = 0;   ///< Pa, gate pressure at the end of the last window
+    double aitken_ = 0;         ///< implicit: the last Aitken factor in (0, 1] (0: none yet)
     bool started_ = false;
 };
 

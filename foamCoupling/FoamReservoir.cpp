@@ -1,0 +1,128 @@
+#include "FoamReservoir.hpp"
+
+#include <dlfcn.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <sstream>
+
+#include "core/Error.hpp"
+
+namespace qs::foam {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+using CreateTube = Tube* (*)(const TubeSettings*, char*, int);
+CreateTube createTube = nullptr;
+
+std::string shellQuote(const std::string& s) {
+    std::string q = "'";
+    for (char c : s) q += (c == '\'') ? std::string("'\\''") : std::string(1, c);
+    return q + "'";
+}
+
+/// Runs blockMesh in `dir` when it has no mesh yet; its output goes to the log.
+void meshIfNeeded(const fs::path& dir, const std::string& log, const std::string& caseName) {
+    if (fs::exists(dir / "constant/polyMesh/owner")) return;
+    QS_CHECK(fs::exists(dir / "system/blockMeshDict"),
+             "OpenFOAM case " << caseName << ": no mesh (constant/polyMesh) and no system/blockMeshDict to make one");
+    const std::string cmd = std::string(QUICKSAND_BLOCKMESH) + " -case " + shellQuote(dir.string()) +
+                            " >> " + shellQuote(log) + " 2>&1";
+    const int rc = std::system(cmd.c_str());
+    QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": blockMesh failed (exit " << rc << "); see " << log);
+}
+
+}  // namespace
+
+void prepareEnvironment() {
+    // libOpenFOAM (and blockMesh) read $WM_PROJECT_DIR/etc/controlDict at start-up and end the
+    // process without it: set it first (a user's own OpenFOAM environment wins)
+    setenv("WM_PROJECT_DIR", QUICKSAND_OPENFOAM_PROJECT_DIR, 0);
+}
+
+void loadPlugin() {
+    if (createTube) return;
+    prepareEnvironment();
+    void* handle = dlopen(QUICKSAND_FOAM_PLUGIN, RTLD_NOW | RTLD_GLOBAL);
+    QS_CHECK(handle, "cannot load the OpenFOAM plugin " << QUICKSAND_FOAM_PLUGIN << ": " << dlerror());
+    createTube = reinterpret_cast<CreateTube>(dlsym(handle, "quicksand_foam_create_tube"));
+    QS_CHECK(createTube, "the OpenFOAM plugin " << QUICKSAND_FOAM_PLUGIN << " lacks quicksand_foam_create_tube");
+}
+
+FoamReservoir::FoamReservoir(const CaseConfig& config)
+    : caseName_(config.reservoir.openfoamCase),
+      density_(config.liquid.density),
+      gravity_(config.gravity),
+      area_(config.reservoir.area) {
+    head_ = trialHead_ = config.reservoir.head;
+    prepareEnvironment();
+    const fs::path source(config.reservoir.openfoamCase);
+    QS_CHECK(fs::is_directory(source), "case.toml: key 'reservoir.openfoam_case': OpenFOAM case directory "
+                                           << source.string() << " does not exist");
+    for (const char* needed : {"system/controlDict", "system/fvSchemes", "system/fvSolution",
+                               "constant/transportProperties", "0/U", "0/p"})
+        QS_CHECK(fs::exists(source / needed), "OpenFOAM case " << caseName_ << ": missing " << needed);
+
+    const fs::path out = fs::path(config.caseDirectory) / config.output.directory;
+    fs::create_directories(out);
+    const fs::path work = out / "openfoam";
+    fs::remove_all(work);
+    fs::copy(source, work, fs::copy_options::recursive);
+    workDir_ = fs::absolute(work).string();
+    logFile_ = fs::absolute(out / "openfoam.log").string();
+    meshIfNeeded(work, logFile_, caseName_);
+
+    loadPlugin();
+    TubeSettings s;
+    s.caseDirectory = workDir_.c_str();
+    s.gatePatch = config.reservoir.gatePatch.c_str();
+    s.reservoirPatch = config.reservoir.reservoirPatch.c_str();
+    s.logFile = logFile_.c_str();
+    char error[4096] = "";
+    tube_.reset(createTube(&s, error, sizeof error));
+    QS_CHECK(tube_, "OpenFOAM case " << caseName_ << ": " << error << " (OpenFOAM's log: " << logFile_ << ")");
+}
+
+FoamReservoir::~FoamReservoir() = default;
+
+std::string FoamReservoir::name() const { return "OpenFOAM tube " + caseName_; }
+
+double FoamReservoir::initialGatePressure() const { return density_ * gravity_ * head_; }
+
+double FoamReservoir::solveWindow(double /*t*/, double dt, double flux) {
+    trialHead_ = head_ - flux * dt / area_;
+    // the level at the window's middle drives the tube over the window
+    const double p0 = gravity_ * 0.5 * (head_ + trialHead_);
+    double p = 0;
+    try {
+        p = tube_->solve(dt, flux, p0, pending_);
+    } catch (const std::exception& e) {
+        throw Error("OpenFOAM case " + caseName_ + " failed at t = " + std::to_string(tube_->time()) +
+                    " s: " + e.what() + " (OpenFOAM's log: " + logFile_ + ")");
+    }
+    pending_ = true;
+    return density_ * p;
+}
+
+void FoamReservoir::acceptWindow() {
+    head_ = trialHead_;
+    pending_ = false;
+}
+
+void FoamReservoir::restoreState(const std::vector<double>& state) {
+    QS_CHECK(!state.empty(), "OpenFOAM reservoir: the checkpoint holds no reservoir level");
+    head_ = trialHead_ = state[0];
+    pending_ = false;
+}
+
+void FoamReservoir::writeOutput(double t) {
+    try {
+        tube_->write(t);
+    } catch (const std::exception& e) {
+        throw Error("OpenFOAM case " + caseName_ + ": writing fields failed: " + e.what());
+    }
+}
+
+}  // namespace qs::foam

@@ -1,0 +1,52 @@
+#pragma once
+// FoamReservoir: the upstream reservoir and U-tube as an OpenFOAM model, a WindowedModel that a
+// coupling scheme drives window by window (physics.md section 3).
+//
+//   - the OpenFOAM case named by reservoir.openfoam_case is copied to OUTPUT/openfoam/ (the
+//     source case is never written to) and meshed with blockMesh when it has no mesh;
+//   - the reservoir level is a 0-D volume balance, A_r dh/dt = -Q, applied as the total pressure
+//     g (h - z_gate) on the reservoir patch (kinematic, piezometric about the gate plane);
+//   - the gate flux enters the tube's gate patch as the velocity Q / A_gate (out of the tube);
+//   - the gate pressure returned is rho times the area-averaged kinematic p on the gate patch;
+//   - OpenFOAM's own output goes to OUTPUT/openfoam.log; its fields are written at the output
+//     times into OUTPUT/openfoam/<time>/ so ParaView opens the tube beside the column.
+// No OpenFOAM header here: the OpenFOAM code is a plugin loaded at run time (FoamTube.hpp).
+#include <memory>
+#include <string>
+
+#include "FoamTube.hpp"
+#include "coupling/WindowedModel.hpp"
+#include "io/CaseConfig.hpp"
+
+namespace qs::foam {
+
+class FoamReservoir final : public WindowedModel {
+public:
+    explicit FoamReservoir(const CaseConfig& config);
+    ~FoamReservoir() override;
+
+    std::string name() const override;
+    double initialGatePressure() const override;
+    double solveWindow(double t, double dt, double flux) override;
+    void acceptWindow() override;
+    double head() const override { return head_; }
+    std::vector<double> saveState() const override { return {head_}; }
+    void restoreState(const std::vector<double>& state) override;
+    void writeOutput(double t) override;
+
+    const std::string& workDirectory() const { return workDir_; }
+
+private:
+    std::string caseName_, workDir_, logFile_;
+    double density_, gravity_, area_;
+    double head_ = 0, trialHead_ = 0;
+    bool pending_ = false;      ///< a window was solved and not yet accepted
+    std::unique_ptr<Tube> tube_;
+};
+
+/// Makes OpenFOAM usable without a sourced environment: sets WM_PROJECT_DIR when absent.
+void prepareEnvironment();
+/// Loads the plugin (after prepareEnvironment); throws qs::Error naming what is missing.
+void loadPlugin();
+
+}  // namespace qs::foam
