@@ -1,6 +1,7 @@
 #include "FoamReservoir.hpp"
 
 #include <dlfcn.h>
+#include <sys/wait.h>
 
 #include <cstdlib>
 #include <filesystem>
@@ -30,8 +31,10 @@ void meshIfNeeded(const fs::path& dir, const std::string& log, const std::string
              "OpenFOAM case " << caseName << ": no mesh (constant/polyMesh) and no system/blockMeshDict to make one");
     const std::string cmd = std::string(QUICKSAND_BLOCKMESH) + " -case " + shellQuote(dir.string()) +
                             " >> " + shellQuote(log) + " 2>&1";
-    const int rc = std::system(cmd.c_str());
-    QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": blockMesh failed (exit " << rc << "); see " << log);
+    const int status = std::system(cmd.c_str());
+    const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": blockMesh could not mesh system/blockMeshDict (exit "
+                                      << rc << "); see its messages in " << log);
 }
 
 }  // namespace

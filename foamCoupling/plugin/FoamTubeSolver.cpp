@@ -39,6 +39,10 @@ auto guarded(std::ofstream& log, F&& f) -> decltype(f()) {
     OutputToLog redirect(log);
     try {
         return f();
+    } catch (const Foam::IOerror& e) {
+        // a dictionary error: name the file and line, as OpenFOAM's own report does
+        throw std::runtime_error(std::string(e.message()) + " (file " + e.ioFileName() + ", line " +
+                                 std::to_string(e.ioStartLineNumber()) + ")");
     } catch (const Foam::error& e) {
         throw std::runtime_error(std::string(e.message()));
     }

@@ -13,8 +13,9 @@
 // Explicit (staggered, subcycled): the model solves the window first with the MPM's mean flux
 // of the previous window; the MPM then runs its steps with the gate pressure interpolated from
 // the last window's end value to the new one. Cheap, one model solve per window, but the gate
-// pressure answers flux acceleration at once (added mass of the tube's water): with a short
-// window and a heavy tube it is unstable.
+// pressure answers flux acceleration at once (the added mass of the tube's water): it is unstable
+// whenever the tube's water is heavier than the column's free water that answers first,
+// (L_t/A_t)/(h_chamber/A_s) > 1, whatever the window.
 // Implicit (per window, Aitken): the window is repeated, the MPM rolled back each time, until
 // the MPM's mean flux equals the flux the model was solved with (relative tolerance), the flux
 // updated by Aitken's dynamic relaxation
