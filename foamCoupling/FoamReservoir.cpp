@@ -71,8 +71,11 @@ FoamReservoir::FoamReservoir(const CaseConfig& config)
     const fs::path out = fs::path(config.caseDirectory) / config.output.directory;
     fs::create_directories(out);
     const fs::path work = out / "openfoam";
-    fs::remove_all(work);
-    fs::copy(source, work, fs::copy_options::recursive);
+    // a fresh run has moved any earlier output aside: an existing copy is a resumed run's
+    if (!fs::exists(work / "system/controlDict")) {
+        fs::remove_all(work);
+        fs::copy(source, work, fs::copy_options::recursive);
+    }
     workDir_ = fs::absolute(work).string();
     logFile_ = fs::absolute(out / "openfoam.log").string();
     meshIfNeeded(work, logFile_, caseName_);
@@ -114,10 +117,17 @@ void FoamReservoir::acceptWindow() {
     pending_ = false;
 }
 
+std::vector<double> FoamReservoir::saveState() const { return {head_, tube_->time()}; }
+
 void FoamReservoir::restoreState(const std::vector<double>& state) {
-    QS_CHECK(!state.empty(), "OpenFOAM reservoir: the checkpoint holds no reservoir level");
+    QS_CHECK(state.size() == 2, "OpenFOAM reservoir: the checkpoint holds no reservoir level and CFD time");
     head_ = trialHead_ = state[0];
     pending_ = false;
+    try {
+        tube_->restart(state[1]);
+    } catch (const std::exception& e) {
+        throw Error("OpenFOAM case " + caseName_ + ": cannot resume: " + e.what());
+    }
 }
 
 void FoamReservoir::writeOutput(double t) {

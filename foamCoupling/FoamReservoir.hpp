@@ -3,7 +3,9 @@
 // coupling scheme drives window by window (physics.md section 3).
 //
 //   - the OpenFOAM case named by reservoir.openfoam_case is copied to OUTPUT/openfoam/ (the
-//     source case is never written to) and meshed with blockMesh when it has no mesh;
+//     source case is never written to) and meshed with blockMesh when it has no mesh; a resumed
+//     run finds that copy (a fresh run has moved the old output aside) and goes on from the
+//     fields written at the checkpoint;
 //   - the reservoir level is a 0-D volume balance, A_r dh/dt = -Q, applied as the total pressure
 //     g (h - z_gate) on the reservoir patch (kinematic, piezometric about the gate plane);
 //   - the gate flux enters the tube's gate patch as the velocity Q / A_gate (out of the tube);
@@ -30,7 +32,9 @@ public:
     double solveWindow(double t, double dt, double flux) override;
     void acceptWindow() override;
     double head() const override { return head_; }
-    std::vector<double> saveState() const override { return {head_}; }
+    /// The level and the CFD time; the fields themselves are written at checkpoints
+    /// (writeOutput) and read back by restoreState from OUTPUT/openfoam/<time>/.
+    std::vector<double> saveState() const override;
     void restoreState(const std::vector<double>& state) override;
     void writeOutput(double t) override;
 

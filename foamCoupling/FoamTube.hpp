@@ -32,8 +32,10 @@ public:
     /// Returns the area-averaged kinematic gate pressure (m2/s2). Throws std::runtime_error with
     /// OpenFOAM's message when OpenFOAM fails.
     virtual double solve(double dt, double flux, double totalPressure, bool repeat) = 0;
-    /// Writes the fields (U, p, phi) at the current CFD time, named by `time` (s).
+    /// Writes the fields (U, p, phi) at the current CFD time (a time directory of the case).
     virtual void write(double time) = 0;
+    /// Continues from the fields written at the time directory closest to `time` (a resume).
+    virtual void restart(double time) = 0;
     /// s, the CFD time.
     virtual double time() const = 0;
 };

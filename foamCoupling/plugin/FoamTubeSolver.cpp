@@ -66,6 +66,21 @@ public:
         guarded(log_, [&] { runTime_->writeNow(); return 0; });
     }
 
+    void restart(double time) override {
+        guarded(log_, [&] {
+            const instantList times = runTime_->times();
+            const label i = Time::findClosestTimeIndex(times, time);
+            if (i < 0 || std::abs(times[i].value() - time) > 1e-6 * std::max(1.0, time))
+                FatalErrorInFunction << "no fields written at t = " << time << " s in " << runTime_->path()
+                                     << " to resume from" << exit(FatalError);
+            runTime_->setTime(times[i], i);
+            U0_.reset(); p0_.reset(); phi0_.reset();
+            phi_.reset(); U_.reset(); p_.reset();  // unregister before reading again
+            readFields();
+            return 0;
+        });
+    }
+
 private:
     void construct(const qs::foam::TubeSettings& s) {
         FatalError.throwExceptions();
@@ -75,16 +90,7 @@ private:
         mesh_.reset(new fvMesh(IOobject(fvMesh::defaultRegion, runTime_->timeName(), *runTime_,
                                         IOobject::MUST_READ)));
         fvMesh& mesh = *mesh_;
-        U_.reset(new volVectorField(IOobject("U", runTime_->timeName(), mesh, IOobject::MUST_READ,
-                                             IOobject::AUTO_WRITE),
-                                    mesh));
-        p_.reset(new volScalarField(IOobject("p", runTime_->timeName(), mesh, IOobject::MUST_READ,
-                                             IOobject::AUTO_WRITE),
-                                    mesh));
-        mesh.setFluxRequired(p_->name());
-        phi_.reset(new surfaceScalarField(IOobject("phi", runTime_->timeName(), mesh,
-                                                   IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE),
-                                          fvc::flux(*U_)));
+        readFields();
         IOdictionary transport(IOobject("transportProperties", runTime_->constant(), mesh,
                                         IOobject::MUST_READ, IOobject::NO_WRITE));
         nu_.reset(new dimensionedScalar("nu", dimViscosity, transport));
@@ -104,6 +110,21 @@ private:
         nCorrectors_ = piso.lookupOrDefault<label>("nCorrectors", 2);
         nNonOrthCorrectors_ = piso.lookupOrDefault<label>("nNonOrthogonalCorrectors", 0);
         gateArea_ = fullArea(gateID_);
+    }
+
+    /// U, p and phi of the current time directory.
+    void readFields() {
+        fvMesh& mesh = *mesh_;
+        U_.reset(new volVectorField(IOobject("U", runTime_->timeName(), mesh, IOobject::MUST_READ,
+                                             IOobject::AUTO_WRITE),
+                                    mesh));
+        p_.reset(new volScalarField(IOobject("p", runTime_->timeName(), mesh, IOobject::MUST_READ,
+                                             IOobject::AUTO_WRITE),
+                                    mesh));
+        mesh.setFluxRequired(p_->name());
+        phi_.reset(new surfaceScalarField(IOobject("phi", runTime_->timeName(), mesh,
+                                                   IOobject::READ_IF_PRESENT, IOobject::AUTO_WRITE),
+                                          fvc::flux(*U_)));
     }
 
     label patchIndex(const char* name) const {

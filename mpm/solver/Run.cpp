@@ -110,6 +110,7 @@ public:
         : mpm_(s), model_(model), scheme_(makeCouplingScheme(config, model, gate, log)) {}
     void advance(double end) override { scheme_->advanceWindow(mpm_, end); }
     void save(CheckpointData& d) const override {
+        model_.writeOutput(mpm_.time());  // a CFD model's fields, to resume from
         d.put("coupling_scheme", scheme_->saveState());
         d.put("coupling_model", model_.saveState());
     }

@@ -239,3 +239,32 @@ TEST(OpenFoamReservoir, BrokenCasesGiveClearErrors) {
         EXPECT_NE(err.find(b.expected), std::string::npos) << b.tag << ": " << err;
     }
 }
+
+TEST(OpenFoamReservoir, CoupledRunResumesFromItsCheckpoint) {
+    QS_REQUIRE_OPENFOAM();
+    // the checkpoint holds the column, the reservoir level and the coupling state; the tube's
+    // fields are written beside it (output/openfoam/<t>/) and read back on resume
+    auto prepare = [](const std::string& tag) {
+        const fs::path dir = freshCaseCopy("verification/openfoam_short_tube", tag);
+        CaseConfig c = loadCase(dir.string());
+        c.time.end = 0.2;
+        c.time.outputInterval = 0.02;
+        c.time.checkpointInterval = 0.1;
+        return c;
+    };
+    const CaseConfig straight = prepare("resume-straight");
+    const Outcome a = run(straight);
+    const CaseConfig split = prepare("resume-split");
+    RunOptions first;
+    first.quiet = true;
+    first.endTime = 0.1;
+    runCase(split, first);
+    RunOptions again;
+    again.quiet = true;
+    again.resume = true;
+    const RunSummary b = runCase(split, again);
+    EXPECT_NEAR(b.final.time, a.summary.final.time, 1e-9);
+    EXPECT_NEAR(b.final.gateFlux, a.summary.final.gateFlux, 1e-4 * a.summary.final.gateFlux);
+    EXPECT_NEAR(b.final.reservoirHead, a.summary.final.reservoirHead, 1e-6);
+    EXPECT_NEAR(b.final.gatePressure, a.summary.final.gatePressure, 1e-4 * a.summary.final.gatePressure);
+}
