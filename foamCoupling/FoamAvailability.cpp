@@ -9,7 +9,8 @@ namespace qs::foam {
 #ifdef QUICKSAND_WITH_OPENFOAM
 bool available() { return true; }
 void registerFoamCoupling() {
-    registerOpenFoamModel([](const CaseConfig& c) { return std::make_unique<FoamReservoir>(c); });
+    registerOpenFoamModel(
+        [](const CaseConfig& c, bool resume) { return std::make_unique<FoamReservoir>(c, resume); });
 }
 #else
 bool available() { return false; }

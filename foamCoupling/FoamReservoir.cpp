@@ -54,7 +54,7 @@ void loadPlugin() {
     QS_CHECK(createTube, "the OpenFOAM plugin " << QUICKSAND_FOAM_PLUGIN << " lacks quicksand_foam_create_tube");
 }
 
-FoamReservoir::FoamReservoir(const CaseConfig& config)
+FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume)
     : caseName_(config.reservoir.openfoamCase),
       density_(config.liquid.density),
       gravity_(config.gravity),
@@ -71,8 +71,7 @@ FoamReservoir::FoamReservoir(const CaseConfig& config)
     const fs::path out = fs::path(config.caseDirectory) / config.output.directory;
     fs::create_directories(out);
     const fs::path work = out / "openfoam";
-    // a fresh run has moved any earlier output aside: an existing copy is a resumed run's
-    if (!fs::exists(work / "system/controlDict")) {
+    if (!resume || !fs::exists(work / "system/controlDict")) {
         fs::remove_all(work);
         fs::copy(source, work, fs::copy_options::recursive);
     }

@@ -4,8 +4,7 @@
 //
 //   - the OpenFOAM case named by reservoir.openfoam_case is copied to OUTPUT/openfoam/ (the
 //     source case is never written to) and meshed with blockMesh when it has no mesh; a resumed
-//     run finds that copy (a fresh run has moved the old output aside) and goes on from the
-//     fields written at the checkpoint;
+//     run keeps that copy and goes on from the fields written at the checkpoint;
 //   - the reservoir level is a 0-D volume balance, A_r dh/dt = -Q, applied as the total pressure
 //     g (h - z_gate) on the reservoir patch (kinematic, piezometric about the gate plane);
 //   - the gate flux enters the tube's gate patch as the velocity Q / A_gate (out of the tube);
@@ -24,7 +23,8 @@ namespace qs::foam {
 
 class FoamReservoir final : public WindowedModel {
 public:
-    explicit FoamReservoir(const CaseConfig& config);
+    /// resume: keep OUTPUT/openfoam/ (a resumed run reads its fields from there).
+    FoamReservoir(const CaseConfig& config, bool resume);
     ~FoamReservoir() override;
 
     std::string name() const override;

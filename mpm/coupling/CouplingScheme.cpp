@@ -46,9 +46,10 @@ double CouplingScheme::solveModel(double t0, double dt, double flux) {
     return p;
 }
 
-double CouplingScheme::runMpm(MpmSide& mpm, double t0, double dt, double pStart, double pEnd) {
+double CouplingScheme::runMpm(MpmSide& mpm, double t0, double dt, double pStart, double pEnd,
+                              double flux, double impedance) {
     const auto start = Clock::now();
-    gate_.beginWindow(t0, dt, pStart, pEnd);
+    gate_.beginWindow(t0, dt, pStart, pEnd, flux, impedance);
     const double tEnd = t0 + dt - 0.5 * mpm.dt();
     while (mpm.time() < tEnd) mpm.step();
     stats_.mpmSeconds += seconds(start);
@@ -82,14 +83,17 @@ void ImplicitCoupling::solveWindow(MpmSide& mpm, double t0, double dt) {
         solvedFlux = flux;
         pEnd = solveModel(t0, dt, flux);
         if (k > 0) mpm.load(start);
-        mpmFlux = runMpm(mpm, t0, dt, lastPressure_, pEnd);
+        // the window's end pressure over the whole window (backward Euler): a ramp from the last
+        // window's pressure makes the coupled pair trapezoidal, and the tube's stiff inertia then
+        // leaves an undamped odd-even oscillation of the window fluxes
+        mpmFlux = runMpm(mpm, t0, dt, pEnd, pEnd, flux, impedance_);
         const double r = mpmFlux - flux;
         const double scale = std::max({std::abs(mpmFlux), std::abs(flux), 1e-300});
         stats_.lastResidual = std::abs(r) / scale;
         if (log_)
             *log_ << std::setprecision(9) << "window t = " << t0 << " iteration " << k + 1
                   << " flux " << flux << " mpm flux " << mpmFlux << " residual "
-                  << stats_.lastResidual << " omega " << omega << "\n";
+                  << stats_.lastResidual << " omega " << omega << " impedance " << impedance_ << "\n";
         if (stats_.lastResidual <= config_.tolerance) { converged = true; break; }
         if (k > 0 && r != rPrev) omega = -omega * rPrev / (r - rPrev);  // Aitken (scalar form)
         if (omega > 0 && omega <= 1) aitken_ = omega;

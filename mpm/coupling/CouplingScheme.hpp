@@ -16,10 +16,17 @@
 // pressure answers flux acceleration at once (the added mass of the tube's water): it is unstable
 // whenever the tube's water is heavier than the column's free water that answers first,
 // (L_t/A_t)/(h_chamber/A_s) > 1, whatever the window.
-// Implicit (per window, Aitken): the window is repeated, the MPM rolled back each time, until
+// Implicit (per window, Aitken): the MPM runs the window with the model's end-of-window pressure
+// (backward Euler; a linear ramp would make the pair trapezoidal and leave the tube's stiff
+// inertia an undamped odd-even mode); the window is repeated, the MPM rolled back each time, until
 // the MPM's mean flux equals the flux the model was solved with (relative tolerance), the flux
 // updated by Aitken's dynamic relaxation
 //   omega_k = -omega_{k-1} r_{k-1} (r_k - r_{k-1}) / |r_k - r_{k-1}|^2,  Q_{k+1} = Q_k + omega_k r_k.
+// The implicit scheme also gives the MPM the gate's acoustic impedance rho_L c_L / A about the
+// window's flux (see CouplingInterface): the converged solution is the same, but the chamber's
+// free water does not ring from window to window. (The model's own dp/dQ would be far stiffer and
+// would pin the flux, so the flux residual could no longer see the pressure.) The explicit
+// scheme is the plain staggered one.
 // Each window starts from the last window's Aitken factor (the coupled problem changes slowly;
 // with a heavy tube the factor is ~1e-3 and restarting from 0.5 costs several iterations).
 // Stable where explicit fails; costs the iterations' model solves and MPM steps.
@@ -78,6 +85,8 @@ public:
     /// Advances MPM and model by one window (the last one may be shorter to end at `end`).
     void advanceWindow(MpmSide& mpm, double end);
     const CouplingStats& stats() const { return stats_; }
+    /// Pa s/m3, the damping impedance the implicit scheme applies about each window's flux.
+    void setGateImpedance(double z) { impedance_ = z; }
     double lastFlux() const { return lastFlux_; }
     /// For checkpoints: the scheme's own state (last flux and pressure).
     std::vector<double> saveState() const { return {lastFlux_, lastPressure_, previousFlux_}; }
@@ -87,7 +96,8 @@ protected:
     virtual void solveWindow(MpmSide& mpm, double t0, double dt) = 0;
     /// Runs the MPM from its current state to t0 + dt with the gate pressure from pStart to pEnd;
     /// returns the MPM's mean gate flux.
-    double runMpm(MpmSide& mpm, double t0, double dt, double pStart, double pEnd);
+    double runMpm(MpmSide& mpm, double t0, double dt, double pStart, double pEnd, double flux = 0,
+                  double impedance = 0);
     double solveModel(double t0, double dt, double flux);
 
     WindowedModel& model_;
@@ -99,6 +109,7 @@ protected:
     double previousFlux_ = 0;   ///< m3/s, the one before (for the implicit predictor)
     double lastPressure_ = 0;   ///< Pa, gate pressure at the end of the last window
     double aitken_ = 0;         ///< implicit: the last Aitken factor in (0, 1] (0: none yet)
+    double impedance_ = 0;      ///< implicit: the gate's damping impedance (Pa s/m3)
     bool started_ = false;
 };
 

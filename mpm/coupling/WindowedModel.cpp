@@ -13,13 +13,13 @@ WindowedModelFactory& openFoamFactory() {
 
 void registerOpenFoamModel(WindowedModelFactory factory) { openFoamFactory() = std::move(factory); }
 
-std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config) {
+std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config, bool resume) {
     if (!openFoamFactory())
         throw Error(
             "case.toml: key 'reservoir.model': \"openfoam\" needs a quicksand build with OpenFOAM; "
             "this build has none. Install it with tools/setup.sh --openfoam and rebuild, or use "
             "\"constant_head\" or \"lumped\".");
-    return openFoamFactory()(config);
+    return openFoamFactory()(config, resume);
 }
 
 }  // namespace qs

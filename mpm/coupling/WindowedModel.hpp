@@ -38,10 +38,12 @@ public:
 };
 
 /// foamCoupling/ registers the OpenFOAM model here at start-up (mpm/ never depends on it).
-using WindowedModelFactory = std::function<std::unique_ptr<WindowedModel>(const CaseConfig&)>;
+/// `resume`: the run continues from a checkpoint (the model keeps its working files).
+using WindowedModelFactory =
+    std::function<std::unique_ptr<WindowedModel>(const CaseConfig&, bool resume)>;
 void registerOpenFoamModel(WindowedModelFactory factory);
 /// The model of reservoir.model = "openfoam"; throws qs::Error naming the key when this build
 /// has no OpenFOAM.
-std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config);
+std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config, bool resume = false);
 
 }  // namespace qs

@@ -108,6 +108,7 @@ public:
     WindowAdvancer(DoublePointSolver<D>& s, WindowedModel& model, CouplingInterface& gate,
                    const CouplingConfig& config, std::ostream* log)
         : mpm_(s), model_(model), scheme_(makeCouplingScheme(config, model, gate, log)) {}
+    void setGateImpedance(double z) { scheme_->setGateImpedance(z); }
     void advance(double end) override { scheme_->advanceWindow(mpm_, end); }
     void save(CheckpointData& d) const override {
         model_.writeOutput(mpm_.time());  // a CFD model's fields, to resume from
@@ -160,7 +161,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     std::unique_ptr<WindowedModel> ownedModel;
     WindowedModel* model = options.windowedModel;
     if (windowed && !model) {
-        ownedModel = makeOpenFoamModel(config);
+        ownedModel = makeOpenFoamModel(config, options.resume);
         model = ownedModel.get();
     }
     std::unique_ptr<CouplingInterface> gate;
@@ -176,6 +177,9 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     if (windowed) {
         auto w = std::make_unique<WindowAdvancer<D>>(solver, *model, *gate, config.coupling,
                                                      couplingLog.is_open() ? &couplingLog : nullptr);
+        // the chamber water's acoustic impedance rho c / A damps its ringing between windows
+        const double c = std::sqrt(config.liquid.bulkModulus / config.liquid.density);
+        w->setGateImpedance(config.liquid.density * c / config.grid.crossSectionArea);
         windowAdvancer = w.get();
         advancer = std::move(w);
     } else {

@@ -60,23 +60,24 @@ void replaceInFile(const fs::path& file, const std::string& from, const std::str
 
 TEST(OpenFoamReservoir, TubeGivesHagenPoiseuillePressureDrop) {
     QS_REQUIRE_OPENFOAM();
-    const fs::path dir = freshCaseCopy("verification/openfoam_tube", "hagen-poiseuille");
+    // cases/verification/openfoam_tube is an OpenFOAM case itself (see its README.md)
+    const fs::path dir = freshCaseCopy("verification/openfoam_tube", "hagen-poiseuille/tube");
     CaseConfig c;
-    c.caseDirectory = dir.string();
+    c.caseDirectory = dir.parent_path().string();
     c.reservoir.kind = ReservoirKind::OpenFoam;
-    c.reservoir.openfoamCase = (dir / "reservoir").string();
+    c.reservoir.openfoamCase = dir.string();
     c.reservoir.head = 0.5;
     c.reservoir.area = 1e9;  // a level that does not move
     c.gravity = 9.81;
     c.liquid.density = 998.2;
-    const auto model = makeOpenFoamModel(c);
+    const auto model = makeOpenFoamModel(c, false);
     WindowedModel& tube = *model;
     const double d = 0.010, L = 2.0, nu = 8.93e-7, U = 0.009;  // the case's pipe (README.md there)
     const double area = M_PI * d * d / 4, Q = U * area;
-    // march to steady state: the viscous time d^2/(4 nu) is 28 s
+    // march to steady state (the start-up decays within about 10 s, see the case's README)
     double p = 0, t = 0;
     const double dt = 0.05;
-    for (int k = 0; k < 2400; ++k, t += dt) {
+    for (int k = 0; k < 400; ++k, t += dt) {
         p = tube.solveWindow(t, dt, Q);
         tube.acceptWindow();
     }
@@ -264,7 +265,9 @@ TEST(OpenFoamReservoir, CoupledRunResumesFromItsCheckpoint) {
     again.resume = true;
     const RunSummary b = runCase(split, again);
     EXPECT_NEAR(b.final.time, a.summary.final.time, 1e-9);
-    EXPECT_NEAR(b.final.gateFlux, a.summary.final.gateFlux, 1e-4 * a.summary.final.gateFlux);
+    // not to round-off: the first run's last window is cut short at its end time, so the resumed
+    // run's windows are offset from the straight run's (about 2e-4 of the flux here)
+    EXPECT_NEAR(b.final.gateFlux, a.summary.final.gateFlux, 1e-3 * a.summary.final.gateFlux);
     EXPECT_NEAR(b.final.reservoirHead, a.summary.final.reservoirHead, 1e-6);
-    EXPECT_NEAR(b.final.gatePressure, a.summary.final.gatePressure, 1e-4 * a.summary.final.gatePressure);
+    EXPECT_NEAR(b.final.gatePressure, a.summary.final.gatePressure, 1e-3 * a.summary.final.gatePressure);
 }

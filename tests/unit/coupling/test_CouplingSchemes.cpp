@@ -117,3 +117,17 @@ TEST(CouplingSchemes, ImplicitStaysStableWhereExplicitFails) {
     }
     EXPECT_TRUE(failed) << "explicit coupling should be unstable with this tube";
 }
+
+TEST(CouplingSchemes, OpenFoamModelInABuildWithoutItNamesTheKey) {
+    // the unit tests link no foamCoupling/: nothing registered an OpenFOAM model
+    CaseConfig c = fallingHead(0.1);
+    c.reservoir.kind = ReservoirKind::OpenFoam;
+    try {
+        makeOpenFoamModel(c);
+        FAIL() << "expected an error";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("reservoir.model"), std::string::npos) << what;
+        EXPECT_NE(what.find("tools/setup.sh --openfoam"), std::string::npos) << what;
+    }
+}
