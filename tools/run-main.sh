@@ -9,9 +9,9 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-# The main job: the Deltares column. Until the OpenFOAM reservoir lands (issue 3) it is the
-# standalone case with a lumped reservoir and U-tube.
-main_case="${MAIN_CASE:-cases/deltaresColumnLumped}"
+# The main job: the Deltares column coupled to the OpenFOAM U-tube (cases/deltaresColumn);
+# MAIN_CASE=cases/deltaresColumnLumped runs the standalone version with a lumped reservoir.
+main_case="${MAIN_CASE:-cases/deltaresColumn}"
 build_dir="${QUICKSAND_BUILD_DIR:-build}"
 
 if [[ ! -f "$main_case/case.toml" ]]; then
