@@ -1,6 +1,6 @@
-// makeReservoirModel: the one place that maps [reservoir] in a case to a ReservoirModel.
-// The OpenFOAM model lives in foamCoupling/, which depends on mpm/ and not the other way round,
-// so it is reached through a factory that foamCoupling registers at start-up.
+// makeReservoirModel: the one place that maps a built-in [reservoir] to a ReservoirModel. The
+// OpenFOAM model is a WindowedModel driven by a coupling scheme (coupling/WindowedModel.hpp:
+// makeOpenFoamModel, registered by foamCoupling/), not a per-step ReservoirModel.
 #include "reservoir/ReservoirModel.hpp"
 
 #include "core/Error.hpp"
@@ -8,20 +8,7 @@
 #include "reservoir/ConstantHead.hpp"
 #include "reservoir/LumpedReservoir.hpp"
 
-#include <utility>
-
 namespace qs {
-
-namespace {
-// A function-local static: registration may run from another translation unit's static
-// initialiser, before a namespace-scope object here would be constructed.
-ReservoirFactory& openFoamFactory() {
-    static ReservoirFactory factory;
-    return factory;
-}
-}  // namespace
-
-void registerOpenFoamReservoir(ReservoirFactory factory) { openFoamFactory() = std::move(factory); }
 
 std::unique_ptr<ReservoirModel> makeReservoirModel(const CaseConfig& config) {
     const ReservoirConfig& r = config.reservoir;
@@ -42,11 +29,9 @@ std::unique_ptr<ReservoirModel> makeReservoirModel(const CaseConfig& config) {
             return std::make_unique<LumpedReservoir>(p);
         }
         case ReservoirKind::OpenFoam:
-            if (openFoamFactory()) return openFoamFactory()(config);
             throw Error(
-                "case.toml: key 'reservoir.model': \"openfoam\" needs a quicksand build with "
-                "OpenFOAM; this build has none. Install it with tools/setup.sh --openfoam and "
-                "rebuild, or use \"constant_head\" or \"lumped\".");
+                "reservoir.model = \"openfoam\" is coupled window by window: make it with "
+                "makeOpenFoamModel and drive it with a coupling scheme (runCase does both)");
     }
     throw Error("makeReservoirModel: unknown reservoir kind");
 }

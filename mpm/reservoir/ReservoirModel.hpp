@@ -11,7 +11,6 @@
 // saveState/restoreState let a coupling scheme repeat a window and a checkpoint resume a run.
 //
 // Pressures are gauge pressures in Pa at the gate plane (the chamber bottom, z = 0).
-#include <functional>
 #include <memory>
 #include <string>
 #include <vector>
@@ -42,12 +41,8 @@ public:
     virtual void writeOutput(double /*t*/) {}
 };
 
-/// Builds the model named in [reservoir]. Throws qs::Error for a model this build lacks
-/// (e.g. "openfoam" in a build without OpenFOAM), naming the key and the alternatives.
+/// Builds the built-in model named in [reservoir] (constant head, lumped). The OpenFOAM model is
+/// a WindowedModel (coupling/WindowedModel.hpp); asking for it here throws qs::Error.
 std::unique_ptr<ReservoirModel> makeReservoirModel(const CaseConfig& config);
-
-/// foamCoupling/ registers the OpenFOAM model here at start-up (mpm/ never depends on it).
-using ReservoirFactory = std::function<std::unique_ptr<ReservoirModel>(const CaseConfig&)>;
-void registerOpenFoamReservoir(ReservoirFactory factory);
 
 }  // namespace qs

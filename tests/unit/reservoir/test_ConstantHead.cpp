@@ -62,34 +62,16 @@ TEST(ReservoirFactory, BuildsConstantHeadFromTheCase) {
     EXPECT_DOUBLE_EQ(model->gateLaw(2.0).staticPressure, 1000.0 * 9.806 * (0.4 + 0.01 * 2.0));
 }
 
-TEST(ReservoirFactory, OpenFoamWithoutRegistrationIsAClearError) {
-    registerOpenFoamReservoir(nullptr);  // whatever another test left: this build has none
+TEST(ReservoirFactory, OpenFoamIsNotAPerStepReservoir) {
     CaseConfig config = constantHeadCase();
     config.reservoir.kind = ReservoirKind::OpenFoam;
     try {
         makeReservoirModel(config);
         FAIL() << "expected qs::Error";
     } catch (const Error& e) {
-        EXPECT_EQ(std::string(e.what()),
-                  "case.toml: key 'reservoir.model': \"openfoam\" needs a quicksand build with "
-                  "OpenFOAM; this build has none. Install it with tools/setup.sh --openfoam and "
-                  "rebuild, or use \"constant_head\" or \"lumped\".");
+        // the OpenFOAM model is windowed: tests/unit/coupling checks its missing-build error
+        EXPECT_NE(std::string(e.what()).find("makeOpenFoamModel"), std::string::npos) << e.what();
     }
-}
-
-TEST(ReservoirFactory, OpenFoamUsesTheRegisteredFactory) {
-    int calls = 0;
-    registerOpenFoamReservoir([&calls](const CaseConfig& c) -> std::unique_ptr<ReservoirModel> {
-        ++calls;  // stands in for the OpenFOAM model
-        return std::make_unique<ConstantHead>(c.liquid.density, c.gravity, 1.0);
-    });
-    CaseConfig config = constantHeadCase();
-    config.reservoir.kind = ReservoirKind::OpenFoam;
-    const auto model = makeReservoirModel(config);
-    registerOpenFoamReservoir(nullptr);  // leave no global state behind
-    ASSERT_NE(model, nullptr);
-    EXPECT_EQ(calls, 1);
-    EXPECT_THROW(makeReservoirModel(config), Error);
 }
 
 }  // namespace
