@@ -5,6 +5,7 @@
 
 #include <cstdlib>
 #include <filesystem>
+#include <fstream>
 #include <sstream>
 
 #include "core/Error.hpp"
@@ -76,6 +77,7 @@ FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume)
         fs::copy(source, work, fs::copy_options::recursive);
     }
     workDir_ = fs::absolute(work).string();
+    std::ofstream(work / "openfoam.foam");  // ParaView opens the case through this (empty) file
     logFile_ = fs::absolute(out / "openfoam.log").string();
     meshIfNeeded(work, logFile_, caseName_);
 
