@@ -26,7 +26,9 @@ for arg in "$@"; do
         *) echo "setup.sh: unknown option '$arg' (known: --openfoam, --help)" >&2; exit 2 ;;
     esac
 done
-if $with_openfoam; then packages+=(openfoam); fi
+# the OpenFOAM headers come from the source package: its tarball is .tar.xz, checked with the
+# Debian archive keyring
+if $with_openfoam; then packages+=(openfoam xz-utils debian-archive-keyring); fi
 
 is_installed() {
     [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
