@@ -577,7 +577,6 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
 
     time_ += dt_;
     ++steps_;
-    gateLaw_ = reservoir_.gateLaw(time_);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -586,6 +585,9 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
 
 template <int D>
 void DoublePointSolver<D>::step() {
+    // the gate law for this step, asked afresh: a coupling scheme may have started a new window
+    // (or rolled the window back) since the last step
+    gateLaw_ = reservoir_.gateLaw(time_);
     sortPoints();
     classifyCells();
     pointsToGrid();
