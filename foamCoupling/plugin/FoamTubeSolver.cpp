@@ -6,6 +6,7 @@
 #include <cstring>
 #include <fstream>
 #include <iostream>
+#include <algorithm>
 #include <memory>
 #include <stdexcept>
 
@@ -110,6 +111,46 @@ private:
         nCorrectors_ = piso.lookupOrDefault<label>("nCorrectors", 2);
         nNonOrthCorrectors_ = piso.lookupOrDefault<label>("nNonOrthogonalCorrectors", 0);
         gateArea_ = fullArea(gateID_);
+        gateProfile_.reset(new vectorField(developedProfile(gateID_)));
+    }
+
+    /// The gate velocity per unit flux (1/m2): the developed laminar profile 2 (1 - r^2/R^2) of
+    /// a pipe leaving the tube, normalised so that its flux over the full circle is 1. (A uniform
+    /// velocity would meet the no-slip wall in a jump and recover pressure that a real jet loses.)
+    /// r is measured from the axis: where the two wedge patches meet, or for a full 3D mesh the
+    /// line through the patch's centroid along its normal.
+    vectorField developedProfile(label patch) const {
+        const fvPatch& fp = mesh_->boundary()[patch];
+        const vectorField nf(fp.nf());
+        const vectorField& Cf = fp.Cf();
+        const scalarField& magSf = fp.magSf();
+        vector axisPoint = gSum(Cf * magSf) / gSum(magSf);
+        vector axisDir = gSum(nf * magSf);
+        axisDir /= mag(axisDir);
+        const wedgePolyPatch* wedges[2] = {nullptr, nullptr};
+        int count = 0;
+        for (const polyPatch& pp : mesh_->boundaryMesh())
+            if (isA<wedgePolyPatch>(pp) && !pp.empty() && count < 2) wedges[count++] = &refCast<const wedgePolyPatch>(pp);
+        if (count == 2) {
+            // a point on the axis: a mesh point shared by both wedge patches
+            const labelList& a = wedges[0]->meshPoints();
+            const labelList& b = wedges[1]->meshPoints();
+            for (label i : a)
+                if (std::find(b.begin(), b.end(), i) != b.end()) { axisPoint = mesh_->points()[i]; break; }
+        }
+        auto radius = [&](const vector& x) {
+            const vector d = x - axisPoint;
+            return mag(d - (d & axisDir) * axisDir);
+        };
+        scalar R = 0;
+        for (const label i : mesh_->boundaryMesh()[patch].meshPoints()) R = max(R, radius(mesh_->points()[i]));
+        reduce(R, maxOp<scalar>());
+        scalarField w(Cf.size());
+        forAll(w, f) w[f] = max(scalar(0), 1 - sqr(radius(Cf[f]) / R));
+        // flux over the patch (sector) scaled to the full circle: gateArea_ / sector area
+        const scalar sector = gSum(magSf);
+        const scalar flux = gSum(w * magSf) * gateArea_ / sector;
+        return (w / flux) * nf;
     }
 
     /// U, p and phi of the current time directory.
@@ -170,7 +211,7 @@ private:
             phi = *phi0_;
         }
         // coupled boundary values
-        U.boundaryFieldRef()[gateID_] == (flux / gateArea_) * mesh.boundary()[gateID_].nf();
+        U.boundaryFieldRef()[gateID_] == flux * (*gateProfile_);
         refCast<totalPressureFvPatchScalarField>(p.boundaryFieldRef()[reservoirID_]).p0() = totalPressure;
 
         // PISO (icoFoam)
@@ -204,6 +245,7 @@ private:
     std::unique_ptr<dimensionedScalar> nu_;
     label gateID_ = -1, reservoirID_ = -1, nCorrectors_ = 2, nNonOrthCorrectors_ = 0;
     double gateArea_ = 0;
+    std::unique_ptr<vectorField> gateProfile_;  ///< velocity per unit flux on the gate faces
 };
 
 }  // namespace
