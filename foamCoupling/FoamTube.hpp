@@ -6,8 +6,9 @@
 // loaded, and exits the process without it). Its one exported symbol creates a Tube.
 //
 // A Tube is an incompressible laminar flow (PISO, as icoFoam) in an OpenFOAM case with two
-// coupled patches: the gate (the tube's end at the column: a fixed velocity, flux / area out of
-// the tube) and the reservoir (a total pressure from the reservoir level). Pressures are
+// coupled patches: the gate (the tube's end at the column: a fixed velocity, the developed laminar
+// profile of the flux out of the tube) and the reservoir (a total pressure from the reservoir
+// level). Pressures are
 // kinematic (p / rho, m2/s2) and piezometric relative to the gate plane: OpenFOAM's
 // incompressible solvers carry no gravity, so p = g (h_res - z_gate) at rest.
 #include <string>
