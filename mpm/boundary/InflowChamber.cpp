@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "core/Error.hpp"
+
 namespace qs {
 
 template <int D>
@@ -24,7 +26,8 @@ Real InflowChamber<D>::gapVolume(const Grid<D>& grid) const {
 template <int D>
 Index InflowChamber<D>::columnOfNode(const Grid<D>& grid, Index node) const {
     if (D == 1) return 0;
-    // the cell column to the node's lower side along axis 0 (2D); 3D uses the flat column index
+    // the column of the cell whose lower-left corner is the node (the last column for the
+    // nodes on the far walls): one neighbouring column per node, enough for the gap's weight
     const IVec<D> n = grid.nodeCoords(node);
     Index col = 0, stride = 1;
     for (int d = 0; d < D - 1; ++d) {
@@ -56,6 +59,8 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
             }
         }
         const IVec<D> cc = grid.cellCoords(col);
+        QS_CHECK(ref >= 0, "the chamber's column " << col << " has no liquid in its two lowest cell rows: the "
+                           "water left the chamber faster than one cell per step (reduce time.courant)");
         while (bottom >= height) {
             for (int k = 0; k < rowPoints; ++k) {
                 int rest = k;

@@ -453,7 +453,8 @@ void DoublePointSolver<D>::solveNodes() {
 template <int D>
 void DoublePointSolver<D>::gridToPoints() {
     const Real dt = dt_;
-    const Real top = grid_.top();
+    Real extent[D];  // points stay inside the grid, axis by axis
+    for (int d = 0; d < D; ++d) extent[d] = grid_.cells(d) * grid_.h();
     forAll(static_cast<Index>(solid_.size()), [&](Index p) {
         Real dv[D] = {}, vNew[D] = {}, L[D][D] = {};
         forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
@@ -467,7 +468,7 @@ void DoublePointSolver<D>::gridToPoints() {
         });
         for (int d = 0; d < D; ++d) {
             solid_.v[p * D + d] += dv[d];  // FLIP: PIC would smear the jumps at porosity interfaces
-            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * vNew[d], Real(0), top);
+            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * vNew[d], Real(0), extent[d]);
         }
         Real dEps[6] = {};
         for (int d = 0; d < D; ++d)
@@ -508,7 +509,7 @@ void DoublePointSolver<D>::gridToPoints() {
         });
         for (int d = 0; d < D; ++d) {
             liquid_.v[p * D + d] += dv[d];
-            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + dt * vNew[d], Real(0), top);
+            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + dt * vNew[d], Real(0), extent[d]);
         }
         liquid_.strainVol[p] = dt * div;
         liquid_.volume[p] *= 1 + dt * div;  // V follows the liquid's own strain

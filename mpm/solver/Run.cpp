@@ -7,6 +7,7 @@
 #include <fstream>
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "core/Error.hpp"
 #include "io/Checkpoint.hpp"
@@ -71,15 +72,38 @@ std::string formatDuration(double s) {
     return buf;
 }
 
-/// Moves an earlier output directory aside (output.previous) and creates a fresh one.
-void freshOutputDirectory(const fs::path& outDir) {
-    if (fs::exists(outDir)) {
-        const fs::path previous = outDir.string() + ".previous";
-        fs::remove_all(previous);
-        fs::rename(outDir, previous);
+/// A fresh output directory, with the earlier one kept: it is moved aside at once and becomes
+/// output.previous only when the run has started (commit()); a run that fails before that
+/// (an OpenFOAM case that does not load) puts it back, so earlier results are never lost.
+class OutputRotation {
+public:
+    explicit OutputRotation(fs::path outDir) : outDir_(std::move(outDir)) {
+        aside_ = outDir_.string() + ".moving-aside";
+        fs::remove_all(aside_);
+        if (fs::exists(outDir_)) fs::rename(outDir_, aside_);
+        fs::create_directories(outDir_);
+        active_ = true;
     }
-    fs::create_directories(outDir);
-}
+    void commit() {
+        if (!active_) return;
+        const fs::path previous = outDir_.string() + ".previous";
+        if (fs::exists(aside_)) {
+            fs::remove_all(previous);
+            fs::rename(aside_, previous);
+        }
+        active_ = false;
+    }
+    ~OutputRotation() {
+        if (!active_) return;
+        std::error_code ignored;  // a destructor must not throw: best effort
+        fs::remove_all(outDir_, ignored);
+        if (fs::exists(aside_, ignored)) fs::rename(aside_, outDir_, ignored);
+    }
+
+private:
+    fs::path outDir_, aside_;
+    bool active_ = false;
+};
 
 /// Advances the solver, either step by step (built-in reservoirs, advanced inside each step) or
 /// window by window through a coupling scheme (windowed models such as OpenFOAM).
@@ -155,7 +179,8 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
         QS_CHECK(fs::exists(checkpointPath),
                  "cannot resume: no checkpoint at " << checkpointPath.string()
                                                     << " (run without --resume first)");
-    if (options.writeFiles && !options.resume) freshOutputDirectory(outDir);
+    std::optional<OutputRotation> rotation;
+    if (options.writeFiles && !options.resume) rotation.emplace(outDir);
 
     // A windowed model (OpenFOAM) works in the output directory.
     std::unique_ptr<WindowedModel> ownedModel;
@@ -168,6 +193,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     if (windowed) gate = std::make_unique<CouplingInterface>(*model);
     ReservoirModel& reservoir = windowed ? static_cast<ReservoirModel&>(*gate) : *builtIn;
     DoublePointSolver<D> solver(config, reservoir);
+    if (rotation) rotation->commit();  // everything loaded: the earlier output becomes .previous
 
     std::ofstream couplingLog;
     if (windowed && options.writeFiles)

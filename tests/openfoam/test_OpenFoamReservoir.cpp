@@ -234,8 +234,14 @@ TEST(OpenFoamReservoir, BrokenCasesGiveClearErrors) {
     for (const auto& b : cases) {
         const fs::path dir = freshCaseCopy("verification/openfoam_short_tube", std::string("broken-") + b.tag);
         b.breakIt(dir);
+        fs::create_directories(dir / "output");  // earlier results, which must survive
+        std::ofstream(dir / "output/series.csv") << "earlier results\n";
         const auto [code, err] = runCommand(dir);
         EXPECT_EQ(code, 1) << b.tag << ": " << err;  // not 124 (hang), not a signal
+        std::ifstream kept(dir / "output/series.csv");
+        std::string line;
+        std::getline(kept, line);
+        EXPECT_EQ(line, "earlier results") << b.tag << ": the failed run touched the earlier output";
         EXPECT_NE(err.find("quicksand: error:"), std::string::npos) << b.tag << ": " << err;
         EXPECT_NE(err.find(b.expected), std::string::npos) << b.tag << ": " << err;
     }

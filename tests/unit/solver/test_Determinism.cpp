@@ -6,6 +6,7 @@
 #include "io/CaseLoader.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"
+#include "solver/Parallel.hpp"
 
 using namespace qs;
 
@@ -19,12 +20,13 @@ struct Snapshot {
 Snapshot runWithThreads(int threads, ShapeFunctionKind shape) {
     CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/critical_gradient");
     c.grid.shapeFunctions = shape;
-    // fine enough that every loop runs in parallel (above kMinParallelItems / Blocks)
-    const double h = 0.186 / 1200;
+    // fine enough that every loop runs in parallel: more nodes, cells and points of each set
+    // than kMinParallelItems, more blocks per colour than kMinParallelBlocks
+    const double h = 0.186 / 4200;
     c.grid.cellSize = h;
     c.column.chamberHeight = 12 * h;
-    c.layers.front().thickness = 1200 * h;
-    c.column.waterLevel = c.column.chamberHeight + 1212 * h;
+    c.layers.front().thickness = 4200 * h;
+    c.column.waterLevel = c.column.chamberHeight + 4212 * h;
     c.column.overflowLevel = c.column.waterLevel;
     c.column.top = c.column.waterLevel + 24 * h;
     c.reservoir.head = c.column.waterLevel;
@@ -33,6 +35,9 @@ Snapshot runWithThreads(int threads, ShapeFunctionKind shape) {
     omp_set_num_threads(threads);
     auto reservoir = makeReservoirModel(c);
     DoublePointSolver<1> solver(c, *reservoir);
+    EXPECT_GT(solver.grid().numNodes(), kMinParallelItems);
+    EXPECT_GT(static_cast<Index>(solver.solid().size()), kMinParallelItems);
+    EXPECT_GT(static_cast<Index>(solver.liquid().size()), kMinParallelItems);
     for (int k = 0; k < 300; ++k) solver.step();
     omp_set_num_threads(before);
     return {solver.solid().x, solver.solid().stress, solver.liquid().x, solver.liquid().v,
