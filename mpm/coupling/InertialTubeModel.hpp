@@ -10,19 +10,14 @@
 // OpenFOAM tube's behaviour in lumped form, so the coupling schemes can be verified without
 // OpenFOAM. Without inertia (inertialLength = 0) it is the LumpedReservoir without minor losses.
 #include "coupling/WindowedModel.hpp"
+#include "reservoir/LumpedReservoir.hpp"
 
 namespace qs {
 
-struct InertialTubeParameters {
-    double liquidDensity = 998.2;  ///< kg/m3
-    double gravity = 9.81;         ///< m/s2
-    double viscosity = 8.91e-4;    ///< Pa s
-    double area = 0.0;             ///< m2, reservoir plan area A_r
-    double initialHead = 0.0;      ///< m above the gate plane
-    double tubeDiameter = 0.0;     ///< m
-    double tubeLength = 0.0;       ///< m
-    double inertialLength = -1.0;  ///< m, length of water that must be accelerated
-                                   ///<    (< 0: the tube length; 0: no inertia)
+/// The lumped reservoir's parameters (minor losses not modelled here) and the length of water the
+/// tube must accelerate.
+struct InertialTubeParameters : LumpedReservoirParameters {
+    double inertialLength = -1.0;  ///< m (< 0: the tube length; 0: no inertia)
 };
 
 class InertialTubeModel final : public WindowedModel {
