@@ -17,6 +17,10 @@
 //   6 updatePressure      cell pore-pressure increment from the mixed volumetric strain
 //   7 exchangeAtBoundaries  inflow injection, outflow removal, ledger, reservoir
 // Every phase is deterministic: results do not depend on the number of OpenMP threads.
+// The phases live in their own files: PointsToGrid.cpp (1, 2), GridUpdate.cpp (3, 4),
+// GridToPoints.cpp (5, 6), BoundaryExchange.cpp (7); set-up and the step itself here in
+// DoublePointSolver.cpp, the measurements in ColumnMeasurements.cpp, checkpoints in
+// SolverCheckpoint.cpp.
 #include <memory>
 #include <string>
 #include <vector>

@@ -1,0 +1,127 @@
+// Phases 5 and 6 of the double-point step: FLIP velocities, positions, strains and the
+// constitutive update of the points, then the pore-pressure increment of every cell
+// (physics.md section 2).
+#include <algorithm>
+#include <cmath>
+
+#include "solver/DoublePointSolver.hpp"
+#include "materials/StressTensor.hpp"
+#include "solver/Parallel.hpp"
+
+namespace qs {
+
+// ---------------------------------------------------------------------------------------------
+// 5 grid to points: FLIP velocities, positions, strains, constitutive update
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::gridToPoints() {
+    const Real dt = dt_;
+    Real extent[D];  // points stay inside the grid, axis by axis
+    for (int d = 0; d < D; ++d) extent[d] = grid_.cells(d) * grid_.h();
+    forAll(static_cast<Index>(solid_.size()), [&](Index p) {
+        Real dv[D] = {}, vNew[D] = {}, L[D][D] = {};
+        forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                      &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+            for (int d = 0; d < D; ++d) {
+                const Real v = velS_[i * D + d];
+                dv[d] += N * (v - velSOld_[i * D + d]);
+                vNew[d] += N * v;
+                for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
+            }
+        });
+        for (int d = 0; d < D; ++d) {
+            solid_.v[p * D + d] += dv[d];  // FLIP: PIC would smear the jumps at porosity interfaces
+            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * vNew[d], Real(0), extent[d]);
+        }
+        Real dEps[6] = {};
+        for (int d = 0; d < D; ++d)
+            for (int e = d; e < D; ++e)
+                dEps[voigt(axis3<D>(d), axis3<D>(e))] = 0.5 * dt * (L[d][e] + L[e][d]);
+        const Real dVol = dEps[0] + dEps[1] + dEps[2];
+        const auto& mat = materials_[solid_.material[p]];
+        Real* s = &solid_.stress[p * 6];
+        Real& n = solid_.porosity[p];
+        n = 1 - (1 - n) / (1 + dVol);  // solid mass balance, grains incompressible
+        solid_.volume[p] *= 1 + dVol;
+        if (solid_.state[p] == kFluidisedState) {
+            // fluidised material carries no effective stress; it turns back to solid when it
+            // compacts below n_max, restarting from zero effective stress
+            if (n < mat.maxPorosity && dVol < 0) solid_.state[p] = kSolidState;
+            return;
+        }
+        mat.elastic.update(s, dEps);
+        tensionCutoff(s);
+        const bool zeroStress = s[0] == 0 && s[1] == 0 && s[2] == 0;
+        if (zeroStress && n >= mat.maxPorosity && dVol >= 0) {
+            solid_.state[p] = kFluidisedState;
+            for (int k = 0; k < 6; ++k) s[k] = 0;
+        }
+    });
+
+    liquid_.strainVol.resize(liquid_.size());
+    forAll(static_cast<Index>(liquid_.size()), [&](Index p) {
+        Real dv[D] = {}, vNew[D] = {}, div = 0;
+        forStencil<D>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
+                      &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+            for (int d = 0; d < D; ++d) {
+                const Real v = velL_[i * D + d];
+                dv[d] += N * (v - velLOld_[i * D + d]);
+                vNew[d] += N * v;
+                div += v * gradN[d];
+            }
+        });
+        for (int d = 0; d < D; ++d) {
+            liquid_.v[p * D + d] += dv[d];
+            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + dt * vNew[d], Real(0), extent[d]);
+        }
+        liquid_.strainVol[p] = dt * div;
+        liquid_.volume[p] *= 1 + dt * div;  // V follows the liquid's own strain
+    });
+}
+
+// ---------------------------------------------------------------------------------------------
+// 6 pore pressure, one value per cell
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::updatePressure() {
+    // dp_c = -(K_L / n_c) dt sum_i grad N_i(x_c) . Phi_i,  Phi_i = (1-n_i) v_S,i + n_i v_L,i
+    // (compressible liquid, incompressible grains; the cell average avoids volumetric locking).
+    const Real KL = config_.liquid.bulkModulus, dt = dt_, h = grid_.h();
+    const Real pMin = config_.liquid.cavitationPressure;
+    const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
+    forAll(grid_.numCells(), [&](Index c) {
+        if (liquidCellStart_[c + 1] == liquidCellStart_[c]) return;
+        const IVec<D> cc = grid_.cellCoords(c);
+        Real div = 0;
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> nd;
+            for (int d = 0; d < D; ++d) nd[d] = cc[d] + ((k >> d) & 1);
+            const Index i = grid_.nodeIndex(nd);
+            const Real ni = porosity_[i];
+            for (int a = 0; a < D; ++a) {
+                Real gN = (((k >> a) & 1) ? 1.0 : -1.0) / h;
+                for (int d = 0; d < D; ++d)
+                    if (d != a) gN *= 0.5;
+                div += gN * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
+            }
+        }
+        const Real dp = -(KL / cellPorosity_[c]) * dt * div;
+        cellPressureIncrement_[c] = dp;
+        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+            Real& pp = liquid_.pressure[p];
+            pp = std::max(pp + dp, pMin);  // the liquid takes no tension below the cavitation limit
+            if (zeroSurface && liquid_.state[p] == kFreeSurfaceLiquid) pp = 0;
+        }
+    });
+}
+
+template void DoublePointSolver<1>::gridToPoints();
+template void DoublePointSolver<1>::updatePressure();
+template void DoublePointSolver<2>::gridToPoints();
+template void DoublePointSolver<2>::updatePressure();
+template void DoublePointSolver<3>::gridToPoints();
+template void DoublePointSolver<3>::updatePressure();
+
+}  // namespace qs

@@ -1,0 +1,194 @@
+// Phases 3 and 4 of the double-point step: the nodal forces (gravity, cell pore pressure on both
+// phases, gate and surface tractions), then the nodal velocities with implicit drag and the
+// boundary conditions (physics.md section 2).
+#include <algorithm>
+#include <cmath>
+
+#include "solver/DoublePointSolver.hpp"
+#include "boundary/Overflow.hpp"
+#include "solver/Parallel.hpp"
+
+namespace qs {
+
+// ---------------------------------------------------------------------------------------------
+// 3 forces
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::computeForces() {
+    const Real g = config_.gravity, rhoL = config_.liquid.density;
+    const Index nc = grid_.numCells();
+    const Real h = grid_.h();
+
+    // Cell pore pressure p_c = sum p V* / sum V*, cell porosity and its gradient at the centre.
+    forAll(nc, [&](Index c) {
+        Real pv = 0, w = 0;
+        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+            pv += liquid_.pressure[p] * liquid_.weight[p];
+            w += liquid_.weight[p];
+        }
+        cellWeight_[c] = w;
+        cellPressure_[c] = w > 0 ? pv / w : 0.0;
+        const IVec<D> cc = grid_.cellCoords(c);
+        Real n = 0;
+        Real grad[D] = {};
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> nd;
+            for (int d = 0; d < D; ++d) nd[d] = cc[d] + ((k >> d) & 1);
+            const Real ni = porosity_[grid_.nodeIndex(nd)];
+            n += ni / (1 << D);
+            for (int a = 0; a < D; ++a) {
+                Real gN = (((k >> a) & 1) ? 1.0 : -1.0) / h;
+                for (int d = 0; d < D; ++d)
+                    if (d != a) gN *= 0.5;
+                grad[a] += gN * ni;
+            }
+        }
+        cellPorosity_[c] = n;
+        for (int a = 0; a < D; ++a) cellPorosityGrad_[c * D + a] = grad[a];
+    });
+
+    // Pressure forces gathered per node from its cells:
+    //   F_p,L = + p_c V_c [ n_c grad N_i(x_c) + N_i(x_c) grad n_c ]
+    //   F_p,S = + p_c V_c [ (1 - n_c) grad N_i(x_c) - N_i(x_c) grad n_c ]
+    // so the liquid feels -n grad p and the solid -(1-n) grad p (physics.md, pressure forces).
+    const Real Nc = 1.0 / (1 << D);
+    forAll(grid_.numNodes(), [&](Index i) {
+        const IVec<D> n = grid_.nodeCoords(i);
+        Real fL[D] = {}, fS[D] = {};
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> c;
+            bool inside = true;
+            for (int d = 0; d < D; ++d) {
+                c[d] = n[d] - 1 + ((k >> d) & 1);
+                if (c[d] < 0 || c[d] >= grid_.cells(d)) inside = false;
+            }
+            if (!inside) continue;
+            const Index cell = grid_.cellIndex(c);
+            const Real pV = cellPressure_[cell] * cellWeight_[cell];
+            if (pV == 0) continue;
+            const Real nc_ = cellPorosity_[cell];
+            for (int a = 0; a < D; ++a) {
+                // node i is the upper node of this cell along a when the cell index is n - 1
+                Real gN = (((k >> a) & 1) ? -1.0 : 1.0) / h;
+                for (int d = 0; d < D; ++d)
+                    if (d != a) gN *= 0.5;
+                const Real gn = cellPorosityGrad_[cell * D + a];
+                fL[a] += pV * (nc_ * gN + Nc * gn);
+                fS[a] += pV * ((1 - nc_) * gN - Nc * gn);
+            }
+        }
+        for (int a = 0; a < D; ++a) {
+            forceL_[i * D + a] += fL[a];
+            forceS_[i * D + a] += fS[a];
+        }
+        forceS_[i * D + D - 1] -= massS_[i] * g;
+        forceL_[i * D + D - 1] -= massL_[i] * g;
+    });
+
+    // Gate: the reservoir's pressure acts on the chamber's liquid at the gate plane, less the
+    // weight of the empty gap below the lowest liquid point (physics.md, gate).
+    if (config_.gate.mode == GateMode::Pressure) {
+        for (Index i : masks_.gateNodes) {
+            const Real p = gateLaw_.staticPressure - rhoL * g * chamber_.gap(chamber_.columnOfNode(grid_, i));
+            forceL_[i * D + D - 1] += p * nodeFootprint(grid_, i);
+        }
+    }
+
+    // Surcharge on the sand top (solid phase) and the overflow level's missing water on the
+    // free surface, both as tractions at the surface elevation.
+    const Real q = surchargeNow();
+    if (q != 0) addSurfaceTraction(grid_, forceS_, sandSurface(), q);
+    surfacePressure_ = 0;
+    if (config_.column.overflowLevel) {
+        const Real zs = waterSurface();
+        if (zs > 0) {
+            surfacePressure_ = rhoL * g * (*config_.column.overflowLevel - zs);
+            addSurfaceTraction(grid_, forceL_, zs, surfacePressure_);
+        }
+    }
+}
+
+// ---------------------------------------------------------------------------------------------
+// 4 nodal update with implicit drag and boundary conditions
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::solveNodes() {
+    const Real dt = dt_;
+    const Real vGate = gateVelocityNow();
+    Real area = 0;
+    for (Index i : masks_.gateNodes) area += nodeFootprint(grid_, i);
+    const Real gateResistance = config_.gate.mode == GateMode::Pressure ? gateLaw_.resistance : 0.0;
+    const Index rowStride = grid_.nodeStride(D - 1);
+
+    forAll(grid_.numNodes(), [&](Index i) {
+        const Real mS = massS_[i], mL = massL_[i], Q = drag_[i];
+        const bool isGate = i < rowStride;  // bottom node row
+        // implicit tube loss at the gate: M_L v = M_L v* - dt c v, c = R A_total A_i
+        const Real c = isGate ? gateResistance * area * nodeFootprint(grid_, i) : 0.0;
+        Real w2 = 0;
+        for (int d = 0; d < D; ++d) {
+            const Index k = i * D + d;
+            Real vS0 = mS > 0 ? momS_[k] / mS : 0.0;
+            Real vL0 = mL > 0 ? momL_[k] / mL : 0.0;
+            Real fS = forceS_[k], fL = forceL_[k];
+            if (damping_) {
+                // local damping, gravity stage only: F <- F - alpha |F| sign(v)
+                fS -= dampingAlpha_ * std::abs(fS) * (vS0 > 0 ? 1 : (vS0 < 0 ? -1 : 0));
+                fL -= dampingAlpha_ * std::abs(fL) * (vL0 > 0 ? 1 : (vL0 < 0 ? -1 : 0));
+            }
+            const Real vS1 = mS > 0 ? vS0 + dt * fS / mS : 0.0;  // drag-free predictors
+            const Real vL1 = mL > 0 ? vL0 + dt * fL / mL : 0.0;
+            const bool vertical = d == D - 1;
+            const Real cd = vertical ? c : 0.0;
+            const Real vLfix = (isGate && vertical) ? vGate : 0.0;
+            Real vS = 0, vL = 0;
+            if (mS > 0 && mL > 0) {
+                if (masks_.solidFixed[k] && masks_.liquidFixed[k]) {
+                    vS = 0; vL = vLfix;
+                } else if (masks_.solidFixed[k]) {
+                    // solid held: solve the liquid alone (solving the pair and overwriting one
+                    // afterwards loses momentum)
+                    vS = 0;
+                    vL = (mL * vL1) / (mL + dt * Q + dt * cd);
+                } else if (masks_.liquidFixed[k]) {
+                    vL = vLfix;
+                    vS = (mS * vS1 + dt * Q * vL) / (mS + dt * Q);
+                } else {
+                    // drag keeps M_L v_L + M_S v_S and relaxes w = v_L - v_S
+                    const Real M = mL + mS;
+                    const Real vm = (mL * vL1 + mS * vS1) / M;
+                    const Real w = (vL1 - vS1) / (1 + dt * Q * (1 / mL + 1 / mS));
+                    vL = vm + mS * w / M;
+                    vS = vm - mL * w / M;
+                }
+            } else if (mL > 0) {
+                vL = masks_.liquidFixed[k] ? vLfix : mL * vL1 / (mL + dt * cd);
+            } else if (mS > 0) {
+                vS = masks_.solidFixed[k] ? 0.0 : vS1;
+            }
+            velSOld_[k] = vS0;
+            velLOld_[k] = vL0;
+            velS_[k] = vS;
+            velL_[k] = vL;
+            w2 += (vL - vS) * (vL - vS);
+        }
+        relSpeed_[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
+    });
+
+    // Gate flux through the gate plane (free water: q = v_L).
+    Real Qg = 0;
+    for (Index i : masks_.gateNodes)
+        if (massL_[i] > 0) Qg += velL_[i * D + D - 1] * nodeFootprint(grid_, i);
+    gateFlux_ = Qg;
+}
+
+template void DoublePointSolver<1>::computeForces();
+template void DoublePointSolver<1>::solveNodes();
+template void DoublePointSolver<2>::computeForces();
+template void DoublePointSolver<2>::solveNodes();
+template void DoublePointSolver<3>::computeForces();
+template void DoublePointSolver<3>::solveNodes();
+
+}  // namespace qs

@@ -1,0 +1,184 @@
+// Phases 1 and 2 of the double-point step: points sorted by cell, cells classified (active,
+// submerged, liquid weights V*), then lumped masses, momenta, the effective-stress force, nodal
+// porosity and drag coefficients mapped to the grid (physics.md section 2).
+#include <algorithm>
+#include <cmath>
+
+#include "solver/DoublePointSolver.hpp"
+#include "grid/ShapeFunctions.hpp"
+#include "materials/StressTensor.hpp"
+#include "solver/Parallel.hpp"
+
+namespace qs {
+
+// ---------------------------------------------------------------------------------------------
+// 1 sort points by cell, classify cells
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+template <class Set>
+void DoublePointSolver<D>::computeShape(Set& set, std::vector<Index>& cellStart,
+                                        std::vector<Index>& counts) {
+    const Index n = static_cast<Index>(set.size());
+    set.shape.resize(n);
+    auto& cell = set.shape.cell;
+    forAll(n, [&](Index p) { cell[p] = grid_.cellOf(&set.x[p * D]); });
+
+    bool sorted = true;
+    for (Index p = 1; p < n && sorted; ++p) sorted = cell[p] >= cell[p - 1];
+    std::fill(counts.begin(), counts.end(), 0);
+    for (Index p = 0; p < n; ++p) ++counts[cell[p] + 1];
+    for (Index c = 0; c < grid_.numCells(); ++c) counts[c + 1] += counts[c];
+    std::copy(counts.begin(), counts.end(), cellStart.begin());
+    if (!sorted) {
+        // counting sort: stable, so points of a cell keep their relative order
+        auto& order = scratch_.order;
+        order.resize(n);
+        for (Index p = 0; p < n; ++p) order[counts[cell[p]]++] = p;
+        reorderPoints(set, order, scratch_);
+        forAll(n, [&](Index p) { cell[p] = grid_.cellOf(&set.x[p * D]); });
+    }
+
+    const auto kind = config_.grid.shapeFunctions;
+    const Real h = grid_.h(), lp = set.halfLength;
+    forAll(n, [&](Index p) {
+        Index start = 0;
+        for (int d = 0; d < D; ++d) {
+            const AxisWeights a = axisWeights(set.x[p * D + d], h, grid_.cells(d), kind, lp);
+            start += a.start * grid_.nodeStride(d);
+            for (int k = 0; k < kStencil; ++k) {
+                set.shape.w[(p * D + d) * 3 + k] = a.w[k];
+                set.shape.dw[(p * D + d) * 3 + k] = a.dw[k];
+            }
+        }
+        set.shape.start[p] = start;
+    });
+}
+
+template <int D>
+void DoublePointSolver<D>::sortPoints() {
+    computeShape(solid_, solidCellStart_, counts_);
+    computeShape(liquid_, liquidCellStart_, counts_);
+}
+
+template <int D>
+void DoublePointSolver<D>::classifyCells() {
+    const Index nc = grid_.numCells();
+    forAll(nc, [&](Index c) {
+        Real vol = 0;
+        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) vol += liquid_.volume[p];
+        cellLiquidVolume_[c] = vol;
+        cellActive_[c] = (liquidCellStart_[c + 1] > liquidCellStart_[c]) ||
+                         (solidCellStart_[c + 1] > solidCellStart_[c]);
+    });
+    // A cell is below the free surface when the cell above holds liquid. There the cell's liquid
+    // points share the whole cell, V* = V_cell V / sum V, so they fill the pores and a half-empty
+    // chamber cell carries no multiple of the gate pressure; above it V* = V (physics.md).
+    const Index up = grid_.cellStride(D - 1);
+    const Index rows = grid_.cells(D - 1);
+    liquid_.weight.resize(liquid_.size());
+    forAll(nc, [&](Index c) {
+        const Index row = (c / up) % rows;
+        const bool above = row + 1 < rows && liquidCellStart_[c + up + 1] > liquidCellStart_[c + up];
+        cellSubmerged_[c] = above;
+        const Real scale = above && cellLiquidVolume_[c] > 0 ? grid_.cellVolume() / cellLiquidVolume_[c] : 1.0;
+        const bool thin = cellLiquidVolume_[c] < config_.liquid.freeSurfaceFilling * grid_.cellVolume();
+        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+            liquid_.weight[p] = liquid_.volume[p] * scale;
+            liquid_.state[p] = (!above && thin) ? kFreeSurfaceLiquid : kSubmergedLiquid;
+        }
+    });
+}
+
+// ---------------------------------------------------------------------------------------------
+// 2 points to grid
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::pointsToGrid() {
+    for (auto* a : {&massS_, &massL_, &solidVolume_, &dragA_, &dragB_})
+        std::fill(a->begin(), a->end(), 0.0);
+    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_}) std::fill(a->begin(), a->end(), 0.0);
+
+    // Solid: mass, momentum, grain volume, drag sums and the effective-stress force
+    // F_int,S = sum grad(N)^T sigma' V (subtracted).
+    forEachPointColoured(grid_, solidCellStart_, [&](Index p) {
+        const Real m = solid_.mass[p], V = solid_.volume[p];
+        const auto& mat = materials_[solid_.material[p]];
+        const Real grains = m / mat.grainDensity;
+        const Real n = solid_.porosity[p];
+        const Real kappa = mat.permeability.kappa(n);
+        const Real a = V / kappa;
+        const Real b = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
+        const Real* s = &solid_.stress[p * 6];
+        const Real* v = &solid_.v[p * D];
+        forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                      &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+            massS_[i] += N * m;
+            solidVolume_[i] += N * grains;
+            dragA_[i] += N * a;
+            dragB_[i] += N * b;
+            for (int d = 0; d < D; ++d) {
+                momS_[i * D + d] += N * m * v[d];
+                Real f = 0;
+                for (int e = 0; e < D; ++e) f += s[voigt(axis3<D>(d), axis3<D>(e))] * gradN[e];
+                forceS_[i * D + d] -= f * V;
+            }
+        });
+    });
+    forEachPointColoured(grid_, liquidCellStart_, [&](Index p) {
+        const Real m = liquid_.mass[p];
+        const Real* v = &liquid_.v[p * D];
+        forStencil<D>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
+                      &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*) {
+            massL_[i] += N * m;
+            for (int d = 0; d < D; ++d) momL_[i * D + d] += N * m * v[d];
+        });
+    });
+
+    // Nodal porosity n_i = 1 - (sum N m_s / rho_s) / V_i with V_i = integral of N_i over the
+    // active cells only: over the whole grid the sand surface would look far too porous.
+    const Real cellShare = grid_.cellVolume() / (1 << D);
+    const Real mu = config_.liquid.viscosity, rhoL = config_.liquid.density;
+    forAll(grid_.numNodes(), [&](Index i) {
+        const IVec<D> n = grid_.nodeCoords(i);
+        Real vol = 0;
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> c;
+            bool inside = true;
+            for (int d = 0; d < D; ++d) {
+                c[d] = n[d] - 1 + ((k >> d) & 1);
+                if (c[d] < 0 || c[d] >= grid_.cells(d)) inside = false;
+            }
+            if (inside && cellActive_[grid_.cellIndex(c)]) vol += cellShare;
+        }
+        nodeVolume_[i] = vol;
+        const Real por = vol > 0 ? 1 - solidVolume_[i] / vol : 1.0;
+        porosity_[i] = std::clamp(por, Real(1e-3), Real(1));
+        // Darcy + Ergun drag, lumped: Q_i = n_i^2 mu sum(N V / kappa)
+        //                                 + rho_L n_i^3 |w_i| sum(N V F / sqrt(kappa)),
+        // |w_i| from the last step (physics.md, drag).
+        const Real ni = porosity_[i];
+        drag_[i] = (massS_[i] > 0 && massL_[i] > 0)
+                       ? ni * ni * mu * dragA_[i] + rhoL * ni * ni * ni * relSpeed_[i] * dragB_[i]
+                       : 0.0;
+    });
+}
+
+template void DoublePointSolver<1>::sortPoints();
+template void DoublePointSolver<1>::classifyCells();
+template void DoublePointSolver<1>::pointsToGrid();
+template void DoublePointSolver<1>::computeShape(SolidPoints<1>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<1>::computeShape(LiquidPoints<1>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<2>::sortPoints();
+template void DoublePointSolver<2>::classifyCells();
+template void DoublePointSolver<2>::pointsToGrid();
+template void DoublePointSolver<2>::computeShape(SolidPoints<2>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<2>::computeShape(LiquidPoints<2>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<3>::sortPoints();
+template void DoublePointSolver<3>::classifyCells();
+template void DoublePointSolver<3>::pointsToGrid();
+template void DoublePointSolver<3>::computeShape(SolidPoints<3>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<3>::computeShape(LiquidPoints<3>&, std::vector<Index>&, std::vector<Index>&);
+
+}  // namespace qs
