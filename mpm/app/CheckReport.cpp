@@ -97,6 +97,18 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         if (i > closed::criticalGradient(m0.grainDensity, rho, m0.porosity) && !config.initial.rigidSkeleton)
             out << "note: the gradient exceeds the critical gradient: the bed will heave and fluidise\n";
     }
+    if (config.reservoir.kind == ReservoirKind::OpenFoam) {
+        const double steps = std::max(1.0, std::round(config.coupling.window / dtStable));
+        out << "reservoir: OpenFOAM case " << config.reservoir.openfoamCase << " (patches '"
+            << config.reservoir.gatePatch << "', '" << config.reservoir.reservoirPatch << "'), level "
+            << config.reservoir.head << " m, area " << config.reservoir.area << " m2\n";
+        out << "coupling: " << (config.coupling.scheme == CouplingKind::Implicit ? "implicit (Aitken)" : "explicit")
+            << ", window " << config.coupling.window << " s = " << steps << " MPM steps\n";
+        CaseConfig withoutTube = config;  // the column alone: an upper bound of the flux
+        withoutTube.reservoir.kind = ReservoirKind::ConstantHead;
+        const double q = expectedSteadyFilterVelocity(withoutTube);
+        out << "expected steady filter velocity without the tube's loss " << q << " m/s (the tube lowers it)\n";
+    }
     out << "case OK\n";
 }
 
