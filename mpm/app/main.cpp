@@ -28,6 +28,10 @@ int usage() {
 int main(int argc, char** argv) {
     if (argc < 3) return usage();
     const std::string command = argv[1], caseDir = argv[2];
+    if (command != "check" && command != "run") {
+        std::cerr << "quicksand: unknown command '" << command << "'\n";
+        return usage();
+    }
     qs::RunOptions options;
     for (int k = 3; k < argc; ++k) {
         if (!std::strcmp(argv[k], "--resume")) options.resume = true;
