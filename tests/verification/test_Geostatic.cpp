@@ -55,13 +55,10 @@ void checkGeostatic(ShapeFunctionKind shape, double gravityStage = 0.0) {
 TEST(Geostatic, PorePressureAndEffectiveStressMatchClosedForm) { checkGeostatic(ShapeFunctionKind::Linear); }
 
 TEST(Geostatic, PorePressureAndEffectiveStressMatchClosedFormWithGimp) {
-    // The K0 state is the exact discrete equilibrium of linear shape functions only: uGIMP's
-    // curved shape functions turn the pre-stress into small extra nodal forces once points move,
-    // and the column settles for about 0.05 s (filter velocity up to 6e-3 K in the sand, 0.2 K at
-    // the gate, where the chamber takes up the squeezed water). A short damped
-    // gravity stage from the K0 state (what initial.gravity_stage_duration is for) finds the
-    // discrete equilibrium first; the dynamic stage is then checked with the same tolerances.
-    checkGeostatic(ShapeFunctionKind::Gimp, 0.1);
+    // (uGIMP once leaked the bottom solid points' support onto the chamber node below the
+    // filter, where the interaction force drove that sliver of solid: the column settled for
+    // 0.05 s with q up to 6e-3 K. The solid now stops at the filter; see PointsToGrid.cpp.)
+    checkGeostatic(ShapeFunctionKind::Gimp);
 }
 
 TEST(Geostatic, GravityStageWithLocalDampingReachesTheSameState) {
