@@ -80,6 +80,38 @@ public:
         }
         return k;
     }
+    /// Calls f(cell, corner) for each existing cell around a node; `corner` is the node's corner
+    /// in that cell (bit d set: the node is the cell's upper node along axis d).
+    template <class F>
+    void forEachCellOfNode(Index node, F&& f) const {
+        const IVec<D> n = nodeCoords(node);
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> c;
+            bool inside = true;
+            for (int d = 0; d < D; ++d) {
+                c[d] = n[d] - 1 + ((k >> d) & 1);
+                if (c[d] < 0 || c[d] >= cells_[d]) inside = false;
+            }
+            if (inside) f(cellIndex(c), ~k & ((1 << D) - 1));
+        }
+    }
+    /// Calls f(node, corner) for the 2^D nodes of a cell (corner as in forEachCellOfNode).
+    template <class F>
+    void forEachNodeOfCell(Index cell, F&& f) const {
+        const IVec<D> c = cellCoords(cell);
+        for (int k = 0; k < (1 << D); ++k) {
+            IVec<D> n;
+            for (int d = 0; d < D; ++d) n[d] = c[d] + ((k >> d) & 1);
+            f(nodeIndex(n), k);
+        }
+    }
+    /// dN/dx_a of the linear shape function of a cell's `corner` node, at the cell's centre.
+    Real centreGradient(int corner, int a) const {
+        Real g = (((corner >> a) & 1) ? 1.0 : -1.0) / h_;
+        for (int d = 0; d < D; ++d)
+            if (d != a) g *= 0.5;
+        return g;
+    }
     Real nodePosition(Index nodeCoord) const { return nodeCoord * h_; }
     Real cellCentre(Index cellCoord) const { return (cellCoord + 0.5) * h_; }
 

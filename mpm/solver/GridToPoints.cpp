@@ -88,25 +88,17 @@ template <int D>
 void DoublePointSolver<D>::updatePressure() {
     // dp_c = -(K_L / n_c) dt sum_i grad N_i(x_c) . Phi_i,  Phi_i = (1-n_i) v_S,i + n_i v_L,i
     // (compressible liquid, incompressible grains; the cell average avoids volumetric locking).
-    const Real KL = config_.liquid.bulkModulus, dt = dt_, h = grid_.h();
+    const Real KL = config_.liquid.bulkModulus, dt = dt_;
     const Real pMin = config_.liquid.cavitationPressure;
     const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
     forAll(grid_.numCells(), [&](Index c) {
         if (liquidCellStart_[c + 1] == liquidCellStart_[c]) return;
-        const IVec<D> cc = grid_.cellCoords(c);
         Real div = 0;
-        for (int k = 0; k < (1 << D); ++k) {
-            IVec<D> nd;
-            for (int d = 0; d < D; ++d) nd[d] = cc[d] + ((k >> d) & 1);
-            const Index i = grid_.nodeIndex(nd);
+        grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             const Real ni = porosity_[i];
-            for (int a = 0; a < D; ++a) {
-                Real gN = (((k >> a) & 1) ? 1.0 : -1.0) / h;
-                for (int d = 0; d < D; ++d)
-                    if (d != a) gN *= 0.5;
-                div += gN * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
-            }
-        }
+            for (int a = 0; a < D; ++a)
+                div += grid_.centreGradient(corner, a) * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
+        });
         const Real dp = -(KL / cellPorosity_[c]) * dt * div;
         cellPressureIncrement_[c] = dp;
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {

@@ -29,21 +29,13 @@ void DoublePointSolver<D>::computeForces() {
         }
         cellWeight_[c] = w;
         cellPressure_[c] = w > 0 ? pv / w : 0.0;
-        const IVec<D> cc = grid_.cellCoords(c);
         Real n = 0;
         Real grad[D] = {};
-        for (int k = 0; k < (1 << D); ++k) {
-            IVec<D> nd;
-            for (int d = 0; d < D; ++d) nd[d] = cc[d] + ((k >> d) & 1);
-            const Real ni = porosity_[grid_.nodeIndex(nd)];
+        grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
+            const Real ni = porosity_[i];
             n += ni / (1 << D);
-            for (int a = 0; a < D; ++a) {
-                Real gN = (((k >> a) & 1) ? 1.0 : -1.0) / h;
-                for (int d = 0; d < D; ++d)
-                    if (d != a) gN *= 0.5;
-                grad[a] += gN * ni;
-            }
-        }
+            for (int a = 0; a < D; ++a) grad[a] += grid_.centreGradient(corner, a) * ni;
+        });
         cellPorosity_[c] = n;
         for (int a = 0; a < D; ++a) cellPorosityGrad_[c * D + a] = grad[a];
     });
@@ -54,30 +46,18 @@ void DoublePointSolver<D>::computeForces() {
     // so the liquid feels -n grad p and the solid -(1-n) grad p (physics.md, pressure forces).
     const Real Nc = 1.0 / (1 << D);
     forAll(grid_.numNodes(), [&](Index i) {
-        const IVec<D> n = grid_.nodeCoords(i);
         Real fL[D] = {}, fS[D] = {};
-        for (int k = 0; k < (1 << D); ++k) {
-            IVec<D> c;
-            bool inside = true;
-            for (int d = 0; d < D; ++d) {
-                c[d] = n[d] - 1 + ((k >> d) & 1);
-                if (c[d] < 0 || c[d] >= grid_.cells(d)) inside = false;
-            }
-            if (!inside) continue;
-            const Index cell = grid_.cellIndex(c);
+        grid_.forEachCellOfNode(i, [&](Index cell, int corner) {
             const Real pV = cellPressure_[cell] * cellWeight_[cell];
-            if (pV == 0) continue;
+            if (pV == 0) return;
             const Real nc_ = cellPorosity_[cell];
             for (int a = 0; a < D; ++a) {
-                // node i is the upper node of this cell along a when the cell index is n - 1
-                Real gN = (((k >> a) & 1) ? -1.0 : 1.0) / h;
-                for (int d = 0; d < D; ++d)
-                    if (d != a) gN *= 0.5;
+                const Real gN = grid_.centreGradient(corner, a);
                 const Real gn = cellPorosityGrad_[cell * D + a];
                 fL[a] += pV * (nc_ * gN + Nc * gn);
                 fS[a] += pV * ((1 - nc_) * gN - Nc * gn);
             }
-        }
+        });
         for (int a = 0; a < D; ++a) {
             forceL_[i * D + a] += fL[a];
             forceS_[i * D + a] += fS[a];

@@ -148,17 +148,10 @@ void DoublePointSolver<D>::pointsToGrid() {
     const Real cellShare = grid_.cellVolume() / (1 << D);
     const Real mu = config_.liquid.viscosity, rhoL = config_.liquid.density;
     forAll(grid_.numNodes(), [&](Index i) {
-        const IVec<D> n = grid_.nodeCoords(i);
         Real vol = 0;
-        for (int k = 0; k < (1 << D); ++k) {
-            IVec<D> c;
-            bool inside = true;
-            for (int d = 0; d < D; ++d) {
-                c[d] = n[d] - 1 + ((k >> d) & 1);
-                if (c[d] < 0 || c[d] >= grid_.cells(d)) inside = false;
-            }
-            if (inside && cellActive_[grid_.cellIndex(c)]) vol += cellShare;
-        }
+        grid_.forEachCellOfNode(i, [&](Index cell, int) {
+            if (cellActive_[cell]) vol += cellShare;
+        });
         nodeVolume_[i] = vol;
         const Real por = vol > 0 ? 1 - solidVolume_[i] / vol : 1.0;
         porosity_[i] = std::clamp(por, Real(1e-3), Real(1));
