@@ -26,9 +26,9 @@ for arg in "$@"; do
         *) echo "setup.sh: unknown option '$arg' (known: --openfoam, --help)" >&2; exit 2 ;;
     esac
 done
-# the OpenFOAM headers come from the source package: its tarball is .tar.xz, checked with the
-# Debian archive keyring
-if $with_openfoam; then packages+=(openfoam xz-utils debian-archive-keyring); fi
+# the OpenFOAM headers come from the source package, checked with the Debian archive keyring:
+# its .orig tarball is .tar.bz2 (tar runs bzip2), the Debian part .tar.xz (xz-utils)
+if $with_openfoam; then packages+=(openfoam bzip2 xz-utils debian-archive-keyring); fi
 
 is_installed() {
     [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
@@ -129,6 +129,7 @@ EOF_CONF
     rm -rf "$tmp/debian"
     if $patches_touch_src; then
         echo "setup.sh:   Debian's patches touch src/: unpacking with dpkg-source -x"
+        is_installed dpkg-dev || as_root apt-get install -y --no-install-recommends dpkg-dev
         local full="$aptdir/download/full"   # beside the .dsc, so nothing is copied
         dpkg-source --no-check -x "$aptdir/download/"*.dsc "$full" >/dev/null
         for part in "${parts[@]}"; do

@@ -7,6 +7,7 @@
 #include "physics/ClosedForms.hpp"
 #include "physics/Permeability.hpp"
 #include "solver/ColumnBuilder.hpp"
+#include "solver/RunSize.hpp"
 
 namespace qs {
 
@@ -38,6 +39,29 @@ double expectedSteadyFilterVelocity(const CaseConfig& config) {
         (loss(q) < dh ? qlo : qhi) = q;
     }
     return 0.5 * (qlo + qhi);
+}
+
+void printRunSize(const CaseConfig& config, std::ostream& out) {
+    const RunSize r = estimateRunSize(config);
+    const MachineMemory machine = machineMemory();
+    out << "size: " << r.cells << " cells, " << r.nodes << " nodes, " << r.solidPoints << " solid + "
+        << r.liquidPoints << " liquid points (room for " << r.liquidCapacity << " liquid), "
+        << r.steps << " steps\n";
+    out << "estimated peak memory " << formatBytes(r.peakBytes) << " of the machine's "
+        << formatBytes(machine.total);
+    if (machine.available > 0) out << " (" << formatBytes(machine.available) << " available now)";
+    out << "\n";
+    out << "estimated wall time " << formatSeconds(r.wallSeconds) << " on one thread (at "
+        << kThroughput[config.grid.dimension - 1] << " point updates/s in " << config.grid.dimension
+        << "D, docs/performance.md"
+        << (config.reservoir.kind == ReservoirKind::OpenFoam ? "; doubled for the OpenFOAM tube" : "")
+        << ")\n";
+    if (machine.available > 0 && r.peakBytes > machine.available && r.peakBytes <= machine.total)
+        out << "note: the run needs more memory than is available now; other programs may have to give way\n";
+    if (r.wallSeconds > 86400)
+        out << "note: over a day of wall time; grid.cell_size (now " << config.grid.cellSize
+            << " m) sets both the step count and the point count\n";
+    requireFitsMachine(config, r, machine);
 }
 
 void printCheckReport(const CaseConfig& config, std::ostream& out) {
@@ -79,6 +103,7 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
     out << "time step: c_fast = " << cMax << " m/s, dt = courant h / c_fast = " << dtStable << " s ("
         << std::llround(config.time.end / (config.time.dt ? *config.time.dt : dtStable))
         << " steps to t = " << config.time.end << " s)\n";
+    printRunSize(config, out);
     out << "points: " << config.points.solidPerCell << " solid and " << config.points.liquidPerCell
         << " liquid per sand cell and axis, " << freeWaterPointsPerCell(config)
         << " liquid per free-water cell vertically\n";

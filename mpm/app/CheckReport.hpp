@@ -13,4 +13,8 @@ double expectedSteadyFilterVelocity(const CaseConfig& config);
 
 void printCheckReport(const CaseConfig& config, std::ostream& out);
 
+/// The run's size (cells, points, steps), estimated peak memory and wall time; throws qs::Error
+/// when the memory exceeds the machine's (solver/RunSize.hpp).
+void printRunSize(const CaseConfig& config, std::ostream& out);
+
 }  // namespace qs

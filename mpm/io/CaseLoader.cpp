@@ -967,6 +967,9 @@ CaseConfig parseCase(const std::string& tomlText, const std::string& fileName,
 
 CaseConfig loadCase(const std::string& caseDirectory) {
     const std::filesystem::path file = std::filesystem::path(caseDirectory) / "case.toml";
+    if (std::filesystem::is_directory(file))
+        throw InputError(file.string(), 0, "",
+                         "is a directory, not a file: the case file case.toml must be a TOML file");
     std::ifstream in(file, std::ios::binary);
     if (!in) {
         const std::string why =

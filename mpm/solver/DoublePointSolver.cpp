@@ -11,6 +11,7 @@
 #include "solver/ColumnBuilder.hpp"
 #include "boundary/Overflow.hpp"
 #include "solver/Parallel.hpp"
+#include "solver/RunSize.hpp"
 
 namespace qs {
 
@@ -31,8 +32,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
     cells[D - 1] = roundCells(config.column.top, h);
     grid_ = Grid<D>(cells, h, config.grid.crossSectionArea);
 
-    const Real rhoL = config.liquid.density, KL = config.liquid.bulkModulus;
-    waveSpeed_ = std::sqrt(KL / rhoL);  // free water
+    waveSpeed_ = fastestWaveSpeed(config);
     for (const auto& m : config.materials) {
         QS_CHECK(m.model == ConstitutiveModel::LinearElastic,
                  "materials." << m.name << ".model: only \"linear_elastic\" is implemented so far");
@@ -43,9 +43,6 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.elastic = LinearElastic::fromYoung(m.youngsModulus, m.poissonRatio);
         s.permeability = PermeabilityLaw::from(m);
         materials_.push_back(s);
-        const auto c = closed::zeroDragWaveSpeeds(s.elastic.oedometric(), KL, m.porosity,
-                                                  m.grainDensity, rhoL);
-        waveSpeed_ = std::max(waveSpeed_, c.fast);
     }
     // dt = C h / c_fast: with implicit drag the fastest explicit wave is the zero-drag fast wave.
     dt_ = config.time.courant * h / waveSpeed_;
@@ -103,9 +100,8 @@ void DoublePointSolver<D>::allocate() {
     cellPorosityGrad_.assign(nc * D, 0.0);
 
     // Liquid points come and go: reserve for the densest filling the run can reach.
-    const std::size_t liquidCapacity =
-        4 * static_cast<std::size_t>(nc) * freeWaterPointsPerCell(config_) *
-            static_cast<std::size_t>(std::pow(config_.points.liquidPerCell, D - 1)) + liquid_.size();
+    const std::size_t liquidCapacity = static_cast<std::size_t>(
+        qs::liquidCapacity(config_, nc, static_cast<std::int64_t>(liquid_.size())));
     reservePoints(liquid_, liquidCapacity, scratch_, 6);
     reservePoints(solid_, solid_.size(), scratch_, 6);
     scratch_.reals.reserve(liquidCapacity * 6);

@@ -16,6 +16,7 @@
 #include "coupling/CouplingScheme.hpp"
 #include "reservoir/ConstantHead.hpp"
 #include "reservoir/ReservoirModel.hpp"
+#include "solver/RunSize.hpp"
 
 namespace qs {
 
@@ -62,14 +63,6 @@ void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver) {
                           {"volume", l.volume.data(), 1},
                           {"state", lState.data(), 1}});
     writer.endStep();
-}
-
-std::string formatDuration(double s) {
-    char buf[64];
-    if (s < 120) std::snprintf(buf, sizeof buf, "%.0f s", s);
-    else if (s < 7200) std::snprintf(buf, sizeof buf, "%.1f min", s / 60);
-    else std::snprintf(buf, sizeof buf, "%.1f h", s / 3600);
-    return buf;
 }
 
 /// A fresh output directory, with the earlier one kept: it is moved aside at once and becomes
@@ -172,6 +165,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     const bool windowed = options.windowedModel || config.reservoir.kind == ReservoirKind::OpenFoam;
 
     // Validate everything that can be validated before touching an earlier output directory.
+    requireFitsMachine(config, estimateRunSize(config), machineMemory());
     std::unique_ptr<ReservoirModel> builtIn;
     if (!windowed) builtIn = makeReservoirModel(config);
     else { ConstantHead probe(config.liquid.density, config.gravity, 0.0); DoublePointSolver<D> check(config, probe); }
@@ -284,7 +278,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
             const double eta = (end - solver.time()) / solver.dt() / rate;
             const ColumnState s = solver.columnState();
             std::printf("  t = %.4g s (%.1f %%)  %.0f steps/s  ETA %s  gate flux %.4g m3/s  i = %.3f\n",
-                        solver.time(), 100 * solver.time() / end, rate, formatDuration(eta).c_str(),
+                        solver.time(), 100 * solver.time() / end, rate, formatSeconds(eta).c_str(),
                         s.gateFlux, s.gradient);
             std::fflush(stdout);
         }
@@ -305,7 +299,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     }
     if (!options.quiet) {
         std::printf("quicksand: done, %ld steps in %s (%.3g point updates/s); results in %s\n",
-                    r.steps, formatDuration(r.wallSeconds).c_str(), r.pointUpdatesPerSecond,
+                    r.steps, formatSeconds(r.wallSeconds).c_str(), r.pointUpdatesPerSecond,
                     options.writeFiles ? outDir.string().c_str() : "(memory)");
         if (!r.couplingSummary.empty()) std::printf("quicksand: %s\n", r.couplingSummary.c_str());
     }

@@ -1,7 +1,10 @@
 # Command-line behaviour of `quicksand` (run by ctest as `cmake -P`):
 #  1. `quicksand check` accepts every shipped case;
 #  2. a case with bad input exits non-zero with a message naming file, line and key;
-#  3. a failed run leaves an earlier output/ untouched.
+#  3. a failed run leaves an earlier output/ untouched;
+#  4. `check` sizes a run (cells, points, steps, memory, wall time) and refuses, as `run` does,
+#     a case whose memory does not fit the machine;
+#  5. a case.toml that is a directory is named as such.
 file(GLOB_RECURSE cases "${SOURCE_DIR}/cases/*/case.toml")
 foreach(c IN LISTS cases)
   get_filename_component(dir "${c}" DIRECTORY)
@@ -29,5 +32,36 @@ endforeach()
 file(READ "${WORK_DIR}/bad/output/series.csv" kept)
 if(NOT kept STREQUAL "earlier results\n")
   message(FATAL_ERROR "a failed run touched the earlier output/")
+endif()
+
+# 4. sizing
+execute_process(COMMAND "${QUICKSAND}" check "${SOURCE_DIR}/cases/deltaresColumnLumped" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+foreach(expected "size: [0-9]+ cells, [0-9]+ nodes, [0-9]+ solid \\+ [0-9]+ liquid points" "[0-9]+ steps"
+                 "estimated peak memory [0-9.]+ [KMG]iB of the machine's" "estimated wall time [0-9.]+ (s|min|h)")
+  if(NOT out MATCHES "${expected}")
+    message(FATAL_ERROR "quicksand check does not size the run ('${expected}'):\n${out}")
+  endif()
+endforeach()
+file(MAKE_DIRECTORY "${WORK_DIR}/huge/output")
+file(WRITE "${WORK_DIR}/huge/output/series.csv" "earlier results\n")
+string(REPLACE "cell_size = 0.0093" "cell_size = 1e-8" huge "${good}")
+file(WRITE "${WORK_DIR}/huge/case.toml" "${huge}")
+foreach(cmd check run)
+  execute_process(COMMAND "${QUICKSAND}" ${cmd} "${WORK_DIR}/huge" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0 OR NOT err MATCHES "does not fit this machine's memory: it needs about [0-9.]+ [GT]iB \\([0-9]+ cells"
+     OR NOT err MATCHES "grid.cell_size")
+    message(FATAL_ERROR "quicksand ${cmd} did not refuse a case too big for the machine (${rc}):\n${out}\n${err}")
+  endif()
+endforeach()
+file(READ "${WORK_DIR}/huge/output/series.csv" kept)
+if(NOT kept STREQUAL "earlier results\n")
+  message(FATAL_ERROR "a refused run touched the earlier output/")
+endif()
+
+# 5. case.toml that is a directory
+file(MAKE_DIRECTORY "${WORK_DIR}/dircase/case.toml")
+execute_process(COMMAND "${QUICKSAND}" check "${WORK_DIR}/dircase" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(rc EQUAL 0 OR NOT err MATCHES "case.toml: is a directory, not a file")
+  message(FATAL_ERROR "a case.toml directory is not named as such (${rc}):\n${err}")
 endif()
 message(STATUS "cli checks passed (${cases})")

@@ -1,0 +1,162 @@
+#include "solver/RunSize.hpp"
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/Error.hpp"
+#include "physics/ClosedForms.hpp"
+#include "solver/ColumnBuilder.hpp"
+
+namespace qs {
+
+namespace {
+
+std::int64_t cellsIn(double length, double h) { return std::llround(length / h); }
+
+// Bytes per point or per grid entity, from the fields the solver keeps (double = 8, Index = 8,
+// int = 4, char = 1); D is the grid dimension.
+double solidBytes(int D) {
+    const double state = 8.0 * (2 * D + 3 + 6) + 4 + 4;  // x, v, mass, volume, porosity, stress; state, material
+    const double shape = 8 + 8 + 8.0 * 6 * D;            // cell, start, w and dw (3 per axis)
+    return state + shape;
+}
+double liquidBytes(int D) {
+    const double state = 8.0 * (2 * D + 3) + 4;          // x, v, mass, volume, pressure; state
+    const double shape = 8 + 8 + 8.0 * 6 * D;
+    const double perStep = 8 + 8 + 1;                    // weight V*, strain increment, drop flag
+    const double scratch = 8.0 * 6 + 4.0 * 6 + 8;        // reorder scratch (reals, ints, order)
+    return state + shape + perStep + scratch;
+}
+double nodeBytes(int D) { return 8.0 * 9 + 8.0 * 8 * D + 2.0 * D; }  // scalars, vectors, masks
+double cellBytes(int D) { return 8.0 * 3 + 2 + 8.0 * (6 + D); }
+
+}  // namespace
+
+std::int64_t liquidCapacity(const CaseConfig& config, std::int64_t cells, std::int64_t initialLiquid) {
+    const int D = config.grid.dimension;
+    const double perLayer = std::pow(double(config.points.liquidPerCell), D - 1);
+    return 4 * cells * freeWaterPointsPerCell(config) * static_cast<std::int64_t>(perLayer) + initialLiquid;
+}
+
+double fastestWaveSpeed(const CaseConfig& config) {
+    const double KL = config.liquid.bulkModulus, rhoL = config.liquid.density;
+    double c = std::sqrt(KL / rhoL);  // free water
+    for (const auto& m : config.materials) {
+        const double Eoed = closed::oedometricModulus(m.youngsModulus, m.poissonRatio);
+        c = std::max(c, closed::zeroDragWaveSpeeds(Eoed, KL, m.porosity, m.grainDensity, rhoL).fast);
+    }
+    return c;
+}
+
+double timeStep(const CaseConfig& config) {
+    if (config.time.dt) return *config.time.dt;
+    return config.time.courant * config.grid.cellSize / fastestWaveSpeed(config);
+}
+
+RunSize estimateRunSize(const CaseConfig& config) {
+    const int D = config.grid.dimension;
+    const double h = config.grid.cellSize;
+    const int spc = config.points.solidPerCell, lpc = config.points.liquidPerCell;
+    RunSize r;
+
+    std::int64_t horizontalCells = 1, horizontalNodes = 1;
+    for (int d = 0; d < D - 1; ++d) {
+        horizontalCells *= cellsIn(config.grid.width, h);
+        horizontalNodes *= cellsIn(config.grid.width, h) + 1;
+    }
+    const std::int64_t rows = cellsIn(config.column.top, h);
+    r.cells = horizontalCells * rows;
+    r.nodes = horizontalNodes * (rows + 1);
+
+    // the lattices of ColumnBuilder: per sand cell spc (solid) and lpc (liquid) per axis; free
+    // water freeWaterPointsPerCell along the vertical, lpc per horizontal axis
+    const double solidPerLayer = std::pow(double(spc), D - 1) * horizontalCells;
+    const double liquidPerLayer = std::pow(double(lpc), D - 1) * horizontalCells;
+    for (const auto& layer : config.layers) {
+        const std::int64_t c = cellsIn(layer.thickness, h);
+        r.solidPoints += static_cast<std::int64_t>(c * spc * solidPerLayer);
+        r.liquidPoints += static_cast<std::int64_t>(c * lpc * liquidPerLayer);
+    }
+    const int nzFree = freeWaterPointsPerCell(config);
+    auto freeWater = [&](double thickness) {
+        const std::int64_t nz = std::llround(thickness / h * nzFree);
+        if (nz > 0) r.liquidPoints += static_cast<std::int64_t>(nz * liquidPerLayer);
+    };
+    freeWater(config.filterLevel());
+    if (config.column.waterLevel > config.sandTop() + 1e-12) freeWater(config.column.waterLevel - config.sandTop());
+    r.liquidCapacity = liquidCapacity(config, r.cells, r.liquidPoints);
+
+    r.dt = timeStep(config);
+    r.steps = static_cast<std::int64_t>(
+        std::ceil((config.time.end + std::max(0.0, config.initial.gravityStageDuration)) / r.dt));
+
+    // The solver's arrays, and one more copy of the point state (a checkpoint being written, or
+    // the rollback copy of an implicit coupling window).
+    const double stateCopy = r.solidPoints * 8.0 * (2 * D + 11) + r.liquidCapacity * 8.0 * (2 * D + 4);
+    r.peakBytes = r.solidPoints * solidBytes(D) + r.liquidCapacity * liquidBytes(D) +
+                  r.nodes * nodeBytes(D) + r.cells * cellBytes(D) + stateCopy;
+
+    double updates = double(r.steps) * double(r.solidPoints + r.liquidPoints);
+    r.wallSeconds = updates / kThroughput[std::clamp(D, 1, 3) - 1];
+    if (config.reservoir.kind == ReservoirKind::OpenFoam) r.wallSeconds *= 2;
+    return r;
+}
+
+MachineMemory machineMemory() {
+    MachineMemory m;
+    const long pages = sysconf(_SC_PHYS_PAGES), pageSize = sysconf(_SC_PAGE_SIZE);
+    if (pages > 0 && pageSize > 0) m.total = double(pages) * double(pageSize);
+    // a container's limit (cgroup v2, then v1) when it is below the machine's RAM
+    for (const char* path : {"/sys/fs/cgroup/memory.max", "/sys/fs/cgroup/memory/memory.limit_in_bytes"}) {
+        std::ifstream in(path);
+        double limit = 0;
+        if (in >> limit && limit > 0 && (m.total == 0 || limit < m.total)) m.total = limit;
+    }
+    std::ifstream info("/proc/meminfo");
+    std::string key;
+    double value = 0;
+    std::string unit;
+    while (info >> key >> value >> unit) {
+        if (key == "MemAvailable:") { m.available = value * 1024.0; break; }
+    }
+    return m;
+}
+
+void requireFitsMachine(const CaseConfig& config, const RunSize& r, const MachineMemory& machine) {
+    if (machine.total <= 0 || r.peakBytes <= machine.total) return;
+    std::ostringstream s;
+    s << config.caseDirectory << "/case.toml: the run does not fit this machine's memory: it needs about "
+      << formatBytes(r.peakBytes) << " (" << r.cells << " cells, " << r.solidPoints << " solid and "
+      << r.liquidPoints << " liquid points, room for " << r.liquidCapacity
+      << " liquid points as the chamber refills), the machine has " << formatBytes(machine.total)
+      << "; use a coarser key 'grid.cell_size' (now " << config.grid.cellSize
+      << " m; memory scales with 1/cell_size^" << config.grid.dimension
+      << ") or fewer points per cell ('points.solid_per_cell', 'points.liquid_per_cell')";
+    throw Error(s.str());
+}
+
+std::string formatBytes(double bytes) {
+    char buf[64];
+    if (bytes >= 1024.0 * 1024 * 1024 * 1024) std::snprintf(buf, sizeof buf, "%.1f TiB", bytes / std::pow(1024.0, 4));
+    else if (bytes >= 1024.0 * 1024 * 1024) std::snprintf(buf, sizeof buf, "%.1f GiB", bytes / std::pow(1024.0, 3));
+    else if (bytes >= 1024.0 * 1024) std::snprintf(buf, sizeof buf, "%.0f MiB", bytes / (1024.0 * 1024));
+    else std::snprintf(buf, sizeof buf, "%.0f KiB", bytes / 1024.0);
+    return buf;
+}
+
+std::string formatSeconds(double s) {
+    char buf[64];
+    if (s < 120) std::snprintf(buf, sizeof buf, "%.0f s", s);
+    else if (s < 7200) std::snprintf(buf, sizeof buf, "%.1f min", s / 60);
+    else if (s < 3 * 86400) std::snprintf(buf, sizeof buf, "%.1f h", s / 3600);
+    else std::snprintf(buf, sizeof buf, "%.3g days", s / 86400);
+    return buf;
+}
+
+}  // namespace qs

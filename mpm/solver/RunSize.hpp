@@ -1,0 +1,68 @@
+#pragma once
+// RunSize: what a case will take before it runs (cells, points, steps, memory, wall time), from
+// the case alone: nothing is allocated, so `quicksand check` can refuse a case that would not fit
+// the machine instead of `run` ending in std::bad_alloc.
+//
+//   const RunSize size = estimateRunSize(config);
+//   if (size.peakBytes > machineMemory().usable) ...refuse...
+//
+// The point counts follow solver/ColumnBuilder's lattices exactly; the liquid capacity is the one
+// DoublePointSolver reserves up front (liquidCapacity), so the memory figure is that of the
+// solver's own arrays (points, shape-function caches, scratch, nodes, cells) plus one copy of the
+// point state for checkpoints and coupling rollbacks. HDF5's buffers and the OpenFOAM tube are
+// small beside it and left out.
+//
+// The wall-time estimate divides point updates (points x steps) by a measured throughput per
+// dimension (kThroughput below, docs/performance.md says how it was measured); OpenFOAM-coupled
+// runs take about twice as long (the tube's share of the main job is about half).
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+#include "io/CaseConfig.hpp"
+
+namespace qs {
+
+/// Material-point updates per second of whole runs on the project's machine (1 thread, Release;
+/// docs/performance.md, "Throughput used by quicksand check").
+constexpr double kThroughput[3] = {1.0e7, 4.0e6, 1.5e6};
+
+struct RunSize {
+    std::int64_t cells = 0, nodes = 0;
+    std::int64_t solidPoints = 0;
+    std::int64_t liquidPoints = 0;     ///< at the start
+    std::int64_t liquidCapacity = 0;   ///< reserved for the densest filling (injection included)
+    std::int64_t steps = 0;            ///< gravity stage and dynamic stage
+    double dt = 0;                     ///< s
+    double peakBytes = 0;              ///< estimated peak memory
+    double wallSeconds = 0;            ///< estimated wall time on one thread
+};
+
+/// Liquid points the solver reserves room for: 4 free-water fillings of every cell (the chamber
+/// refills as water flows in) plus the initial points.
+std::int64_t liquidCapacity(const CaseConfig& config, std::int64_t cells, std::int64_t initialLiquid);
+
+RunSize estimateRunSize(const CaseConfig& config);
+
+/// m/s, the fastest explicit wave: the zero-drag fast wave of each material, or free water's
+/// sqrt(K_L / rho_L) (physics.md, time step).
+double fastestWaveSpeed(const CaseConfig& config);
+/// s, the step a run takes: time.dt if given, else courant h / c_fast.
+double timeStep(const CaseConfig& config);
+
+struct MachineMemory {
+    double total = 0;      ///< bytes of RAM (or the cgroup's limit, if lower)
+    double available = 0;  ///< bytes available now (MemAvailable), 0 if unknown
+};
+MachineMemory machineMemory();
+
+/// Throws qs::Error, with the numbers, when the estimated peak memory exceeds the machine's
+/// (`quicksand check` and `run` both call it before anything is allocated).
+void requireFitsMachine(const CaseConfig& config, const RunSize& size, const MachineMemory& machine);
+
+/// "1.2 GiB", "350 MiB", ...
+std::string formatBytes(double bytes);
+/// "40 s", "3.5 min", "2.1 h", "12 days"
+std::string formatSeconds(double seconds);
+
+}  // namespace qs
