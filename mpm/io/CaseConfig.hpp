@@ -21,8 +21,9 @@ namespace qs {
 
 enum class ShapeFunctionKind { Linear, Gimp };
 enum class PermeabilityMode { Constant, KozenyCarman, KozenyCarmanScaled };
-enum class ConstitutiveModel { LinearElastic, MohrCoulomb };
+enum class ConstitutiveModelKind { LinearElastic, MohrCoulomb };
 enum class InitialStress { K0, Zero };
+enum class InitialState { Solid, Fluidised };
 enum class GateMode { Pressure, Flux, Closed };
 enum class ReservoirKind { ConstantHead, Lumped, OpenFoam };
 enum class CouplingKind { Explicit, Implicit };
@@ -51,7 +52,7 @@ struct PermeabilityConfig {
 
 struct MaterialConfig {
     std::string name;                  ///< the key under [materials]
-    ConstitutiveModel model = ConstitutiveModel::LinearElastic;
+    ConstitutiveModelKind model = ConstitutiveModelKind::LinearElastic;
     double grainDensity = 2650.0;      ///< kg/m3, rho_s
     double porosity = 0.38;            ///< -, n0 in (0,1)
     double maxPorosity = 0.41;         ///< -, n_max in (n0, 1): liquid-state switch
@@ -59,7 +60,9 @@ struct MaterialConfig {
     double youngsModulus = 1e6;        ///< Pa
     double poissonRatio = 0.3;         ///< -, in [0, 0.5)
     double frictionAngle = 30.0;       ///< degrees (MohrCoulomb)
-    double dilatancyAngle = 0.0;       ///< degrees (MohrCoulomb)
+    double dilatancyAngle = 0.0;       ///< degrees (MohrCoulomb), in [0, friction angle]
+    double cohesion = 0.0;             ///< Pa (MohrCoulomb)
+    double tensileStrength = 0.0;      ///< Pa (MohrCoulomb), tension cut-off in [0, c cot phi]
     double k0 = 0.5;                   ///< -, lateral earth-pressure coefficient at rest
     PermeabilityConfig permeability;
     bool ergun = true;                 ///< Forchheimer (Ergun) term on
@@ -87,6 +90,7 @@ struct PointsConfig {
 };
 
 struct InitialConfig {
+    InitialState state = InitialState::Solid;  ///< Fluidised: a suspension, n0 >= n_max allowed
     InitialStress stress = InitialStress::K0;
     bool rigidSkeleton = false;        ///< solid held everywhere (seepage through a fixed bed)
     bool undrainedSurcharge = false;   ///< start from the undrained state under the surcharge

@@ -33,8 +33,9 @@ constexpr const char* kGridKeys[] = {"dimension", "cell_size", "width", "cross_s
 constexpr const char* kColumnKeys[] = {"chamber_height", "water_level", "overflow_level", "top"};
 constexpr const char* kMaterialKeys[] = {
     "model",          "grain_density", "porosity",       "max_porosity",    "min_porosity",
-    "youngs_modulus", "poisson_ratio", "friction_angle", "dilatancy_angle", "k0",
-    "ergun",          "ergun_a",       "ergun_b",        "permeability"};
+    "youngs_modulus", "poisson_ratio", "friction_angle", "dilatancy_angle", "cohesion",
+    "tensile_strength", "k0",          "ergun",          "ergun_a",         "ergun_b",
+    "permeability"};
 constexpr const char* kPermeabilityKeys[] = {"mode", "value", "grain_size"};
 constexpr const char* kLayerKeys[] = {"material", "thickness"};
 constexpr const char* kLiquidKeys[] = {"density",
@@ -44,7 +45,7 @@ constexpr const char* kLiquidKeys[] = {"density",
                                        "free_surface_zero_pressure",
                                        "free_surface_filling"};
 constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
-constexpr const char* kInitialKeys[] = {"stress", "rigid_skeleton", "undrained_surcharge",
+constexpr const char* kInitialKeys[] = {"state", "stress", "rigid_skeleton", "undrained_surcharge",
                                         "gravity_stage_duration", "gravity_stage_damping"};
 constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
 constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
@@ -468,13 +469,15 @@ using Options = std::vector<std::pair<std::string, E>>;
 
 const Options<ShapeFunctionKind> kShapeFunctionOptions = {{"linear", ShapeFunctionKind::Linear},
                                                           {"gimp", ShapeFunctionKind::Gimp}};
-const Options<ConstitutiveModel> kModelOptions = {
-    {"linear_elastic", ConstitutiveModel::LinearElastic},
-    {"mohr_coulomb", ConstitutiveModel::MohrCoulomb}};
+const Options<ConstitutiveModelKind> kModelOptions = {
+    {"linear_elastic", ConstitutiveModelKind::LinearElastic},
+    {"mohr_coulomb", ConstitutiveModelKind::MohrCoulomb}};
 const Options<PermeabilityMode> kPermeabilityOptions = {
     {"constant", PermeabilityMode::Constant},
     {"kozeny_carman", PermeabilityMode::KozenyCarman},
     {"kozeny_carman_scaled", PermeabilityMode::KozenyCarmanScaled}};
+const Options<InitialState> kStateOptions = {{"solid", InitialState::Solid},
+                                              {"fluidised", InitialState::Fluidised}};
 const Options<InitialStress> kStressOptions = {{"k0", InitialStress::K0},
                                                {"zero", InitialStress::Zero}};
 const Options<GateMode> kGateOptions = {
@@ -529,6 +532,9 @@ public:
         c_.gravity = root.optionalNumber("gravity", 9.81, nonNegative("m/s2"));
         readGrid(root);
         readLiquid(root);  // before the materials: their permeability check quotes mu and rho_L
+        // before the materials: a bed that starts fluidised may have n0 >= n_max
+        c_.initial.state = root.subsection("initial", kInitial, false)
+                               .choice("state", InitialState::Solid, kStateOptions);
         readMaterials(root);
         readLayers(root);
         readColumn(root);  // after the layers: the water level defaults to the sand top
@@ -619,18 +625,19 @@ private:
     MaterialConfig readMaterial(const Section& s, const std::string& name) const {
         MaterialConfig m;
         m.name = name;
-        m.model = s.choice("model", ConstitutiveModel::LinearElastic, kModelOptions);
+        m.model = s.choice("model", ConstitutiveModelKind::LinearElastic, kModelOptions);
         m.grainDensity = s.optionalNumber("grain_density", 2650.0, positive("kg/m3"));
         m.porosity = s.requiredNumber("porosity", between(0, true, 1, true),
                                       "initial porosity n0, a fraction: 0.38, not 38");
         m.maxPorosity = s.optionalNumber("max_porosity", 0.41, between(0, true, 1, true));
-        if (!(m.maxPorosity > m.porosity)) {
+        if (!(m.maxPorosity > m.porosity) && c_.initial.state != InitialState::Fluidised) {
             const bool given = s.has("max_porosity");
             s.fail(given ? "max_porosity" : "porosity",
                    "n0 = " + number(m.porosity) + " >= n_max = " + number(m.maxPorosity) +
                        (given ? "" : " (the default)") +
                        ": porosity must be below max_porosity, or the sand starts in the liquid "
-                       "state; lower porosity or set max_porosity in (porosity, 1)");
+                       "state; lower porosity, set max_porosity in (porosity, 1), or start a "
+                       "fluidised bed with initial.state = \"fluidised\"");
         }
         m.minPorosity = s.optionalNumber("min_porosity", 0.32, between(0, true, 1, true));
         if (m.minPorosity > m.porosity) {
@@ -642,11 +649,21 @@ private:
         }
         m.youngsModulus = s.optionalNumber("youngs_modulus", 1e6, positive("Pa"));
         m.poissonRatio = s.optionalNumber("poisson_ratio", 0.3, between(0, false, 0.5, true));
-        m.frictionAngle =
-            s.optionalNumber("friction_angle", 30.0, between(0, false, 90, true, "deg"));
-        m.dilatancyAngle = s.optionalNumber("dilatancy_angle", 0.0,
-                                            between(0, false, m.frictionAngle, false, "deg"),
-                                            "at most friction_angle");
+        if (m.model == ConstitutiveModelKind::MohrCoulomb) {
+            m.frictionAngle =
+                s.optionalNumber("friction_angle", 30.0, between(0, true, 90, true, "deg"));
+            m.dilatancyAngle = s.optionalNumber("dilatancy_angle", 0.0,
+                                                between(0, false, m.frictionAngle, false, "deg"),
+                                                "at most friction_angle");
+            m.cohesion = s.optionalNumber("cohesion", 0.0, nonNegative("Pa"));
+            const double apex = m.cohesion / std::tan(m.frictionAngle * 3.14159265358979323846 / 180.0);
+            m.tensileStrength = s.optionalNumber("tensile_strength", 0.0, between(0, false, apex, false, "Pa"),
+                                                 "at most the apex c cot(phi) = " + number(apex) + " Pa");
+        } else {
+            for (const char* key : {"friction_angle", "dilatancy_angle", "cohesion", "tensile_strength"})
+                s.forbid(key, "it is a Mohr-Coulomb constant and model is " +
+                                  nameOf(kModelOptions, m.model) + " (set model = \"mohr_coulomb\" to use it)");
+        }
         m.k0 = s.optionalNumber("k0", 0.5, nonNegative(""));
         m.ergun = s.boolean("ergun", true);
         m.ergunA = s.optionalNumber("ergun_a", 150.0, positive(""));
@@ -768,7 +785,17 @@ private:
     void readInitial(const Section& root) {
         const Section s = root.subsection("initial", kInitial, false);
         InitialConfig& i = c_.initial;
-        i.stress = s.choice("stress", InitialStress::K0, kStressOptions);
+        if (i.state == InitialState::Fluidised) {
+            // a suspension carries no effective stress: its weight rests on the pore water
+            if (s.has("stress") && s.choice("stress", InitialStress::Zero, kStressOptions) != InitialStress::Zero)
+                s.fail("stress", "a bed that starts fluidised (state = \"fluidised\") carries no effective "
+                                 "stress; remove 'stress' or set stress = \"zero\"");
+            i.stress = InitialStress::Zero;
+            s.forbid("rigid_skeleton", "a fluidised bed cannot have a rigid skeleton");
+            s.forbid("undrained_surcharge", "a fluidised bed carries no surcharge on its skeleton");
+        } else {
+            i.stress = s.choice("stress", InitialStress::K0, kStressOptions);
+        }
         i.rigidSkeleton = s.boolean("rigid_skeleton", false);
         i.undrainedSurcharge = s.boolean("undrained_surcharge", false);
         if (i.undrainedSurcharge && !(c_.loads.surcharge > 0.0))

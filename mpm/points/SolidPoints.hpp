@@ -24,8 +24,11 @@ struct SolidPoints {
     std::vector<Real> stress;     ///< Pa, effective stress [point][6], tension positive
     std::vector<int> state;       ///< PointState
     std::vector<int> material;    ///< index into the solver's material table
+    std::vector<Real> internal;   ///< constitutive state variables [point][internalCount]
 
     ShapeCache<D> shape;          ///< per-step scratch, not part of the state
+    std::vector<int> stressReturn;  ///< per-step scratch: the StressReturn of the last update
+    int internalCount = 0;        ///< state variables per point (the most any material needs)
     Real halfLength = 0;          ///< m, uGIMP particle half-length (from the initial spacing)
 
     std::size_t size() const { return mass.size(); }
@@ -33,7 +36,7 @@ struct SolidPoints {
     template <class F>
     void forEachField(F&& f) {
         f(x, D); f(v, D); f(mass, 1); f(volume, 1); f(porosity, 1); f(stress, 6);
-        f(state, 1); f(material, 1);
+        f(state, 1); f(material, 1); f(internal, internalCount);
     }
 };
 

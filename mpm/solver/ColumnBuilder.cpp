@@ -37,14 +37,15 @@ void forEachLatticePoint(const Grid<D>& grid, int perCell, Real z0, Real z1, Ind
 
 template <int D>
 void appendSolid(SolidPoints<D>& s, const Vec<D>& x, Real V, Real n, Real rhoS, int material,
-                 const Real* stress) {
+                 const Real* stress, int state) {
     for (int d = 0; d < D; ++d) { s.x.push_back(x[d]); s.v.push_back(0); }
     s.mass.push_back((1 - n) * rhoS * V);
     s.volume.push_back(V);
     s.porosity.push_back(n);
     for (int k = 0; k < 6; ++k) s.stress.push_back(stress[k]);
-    s.state.push_back(kSolidState);
+    s.state.push_back(state);
     s.material.push_back(material);
+    for (int k = 0; k < s.internalCount; ++k) s.internal.push_back(0);
 }
 
 template <int D>
@@ -106,7 +107,7 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
         const Real gammaBuoyant = (1 - n0) * (mc.grainDensity - rhoL) * g;
         const Real zb = layerBottom[k], zt = zb + layer.thickness;
         const Index cells = cellsIn(layer.thickness, h);
-        const Real Eoed = materials[matIndex].elastic.oedometric();
+        const Real Eoed = materials[matIndex].model->oedometricModulus();
         const Real lateralRatio = mc.poissonRatio / (1 - mc.poissonRatio);
         // Undrained start under a surcharge q: the water takes u0 = q m_v / (m_v + n/K_L).
         Real u0 = 0;
@@ -114,6 +115,12 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
             const Real mv = 1 / Eoed;
             u0 = config.loads.surcharge * mv / (mv + n0 / config.liquid.bulkModulus);
         }
+        // A bed that starts fluidised is a suspension: no effective stress, its buoyant weight
+        // carried by the pore water as an excess pressure over hydrostatic.
+        const bool fluidised = config.initial.state == InitialState::Fluidised;
+        auto suspensionExcess = [&](Real z) {
+            return fluidised ? overburden[k] + gammaBuoyant * (zt - z) : Real(0);
+        };
         forEachLatticePoint(grid, spc, zb, zt, cells * spc, [&](const Vec<D>& x, Real V) {
             Real stress[6] = {0, 0, 0, 0, 0, 0};
             if (config.initial.stress == InitialStress::K0) {
@@ -127,16 +134,23 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
                 stress[0] += lateralRatio * dsv;
                 stress[1] += lateralRatio * dsv;
             }
-            appendSolid(solid, x, V, n0, mc.grainDensity, matIndex, stress);
+            appendSolid(solid, x, V, n0, mc.grainDensity, matIndex, stress,
+                        fluidised ? kFluidisedState : kSolidState);
         });
         forEachLatticePoint(grid, lpc, zb, zt, cells * lpc, [&](const Vec<D>& x, Real V) {
-            appendLiquid(liquid, x, V, n0 * rhoL * V, hydrostatic(x[D - 1]) + u0);
+            appendLiquid(liquid, x, V, n0 * rhoL * V, hydrostatic(x[D - 1]) + u0 + suspensionExcess(x[D - 1]));
         });
     }
 
     // Free water: the chamber below the filter and the water above the sand. In an undrained
     // start the closed chamber shares the sand's excess pressure (it drains only upwards).
     Real chamberExcess = 0;
+    if (config.initial.state == InitialState::Fluidised) {
+        // the chamber carries the whole suspension's buoyant weight
+        const auto& m = config.material(config.layers.front().material);
+        chamberExcess = overburden.front() +
+                        (1 - m.porosity) * (m.grainDensity - rhoL) * g * config.layers.front().thickness;
+    }
     if (config.initial.undrainedSurcharge) {
         const auto& m = config.material(config.layers.front().material);
         const Real mv = 1 / closed::oedometricModulus(m.youngsModulus, m.poissonRatio);

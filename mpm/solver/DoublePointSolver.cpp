@@ -12,6 +12,7 @@
 #include "boundary/Overflow.hpp"
 #include "solver/Parallel.hpp"
 #include "solver/RunSize.hpp"
+#include "materials/ConstitutiveModels.hpp"
 
 namespace qs {
 
@@ -34,13 +35,13 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
 
     waveSpeed_ = fastestWaveSpeed(config);
     for (const auto& m : config.materials) {
-        QS_CHECK(m.model == ConstitutiveModel::LinearElastic,
-                 "materials." << m.name << ".model: only \"linear_elastic\" is implemented so far");
         SolidMaterial s;
         s.name = m.name;
         s.grainDensity = m.grainDensity;
         s.maxPorosity = m.maxPorosity;
-        s.elastic = LinearElastic::fromYoung(m.youngsModulus, m.poissonRatio);
+        s.model = makeConstitutiveModel(m);
+        s.suspension.waterViscosity = config.liquid.viscosity;
+        s.suspension.maxPacking = 1 - m.minPorosity;
         s.permeability = PermeabilityLaw::from(m);
         materials_.push_back(s);
     }
@@ -55,6 +56,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         dt_ = *config.time.dt;
     }
 
+    for (const auto& m : materials_) solid_.internalCount = std::max(solid_.internalCount, m.model->stateCount());
     buildColumn(config, grid_, materials_, solid_, liquid_);
     allocate();
     masks_.build(grid_, config);
@@ -94,6 +96,7 @@ void DoublePointSolver<D>::allocate() {
     counts_.assign(nc + 1, 0);
     cellActive_.assign(nc, 0);
     cellSubmerged_.assign(nc, 0);
+    cellFluidised_.assign(nc, 0);
     for (auto* a : {&cellLiquidVolume_, &cellPressure_, &cellWeight_, &cellPorosity_,
                     &cellPressureIncrement_})
         a->assign(nc, 0.0);
@@ -111,6 +114,7 @@ void DoublePointSolver<D>::allocate() {
     liquid_.weight.reserve(liquidCapacity);
     liquid_.strainVol.reserve(liquidCapacity);
     solid_.shape.reserve(solid_.size());
+    solid_.stressReturn.assign(solid_.size(), 0);
     dropFlags_.reserve(liquidCapacity);
 }
 
@@ -128,6 +132,7 @@ void DoublePointSolver<D>::step() {
     pointsToGrid();
     computeForces();
     solveNodes();
+    switchLiquidState();
     gridToPoints();
     updatePressure();
     exchangeAtBoundaries();

@@ -13,12 +13,13 @@
 //   2 pointsToGrid        lumped masses, momenta, nodal porosity, drag coefficients
 //   3 computeForces       gravity, effective stress, cell pore pressure, gate and surface tractions
 //   4 solveNodes          predictors, implicit drag, filter / walls / gate
+//   4b switchLiquidState  per cell: solid or fluidised (physics/LiquidStateRule.hpp)
 //   5 gridToPoints        FLIP velocities, positions, strains, stress, porosity, liquid volume
 //   6 updatePressure      cell pore-pressure increment from the mixed volumetric strain
 //   7 exchangeAtBoundaries  inflow injection, outflow removal, ledger, reservoir
 // Every phase is deterministic: results do not depend on the number of OpenMP threads.
 // The phases live in their own files: PointsToGrid.cpp (1, 2), GridUpdate.cpp (3, 4),
-// GridToPoints.cpp (5, 6), BoundaryExchange.cpp (7); set-up and the step itself here in
+// LiquidStateSwitch.cpp (4b), GridToPoints.cpp (5, 6), BoundaryExchange.cpp (7); set-up and the step itself here in
 // DoublePointSolver.cpp, the measurements in ColumnMeasurements.cpp, checkpoints in
 // SolverCheckpoint.cpp.
 #include <memory>
@@ -29,8 +30,10 @@
 #include "boundary/InflowChamber.hpp"
 #include "grid/Grid.hpp"
 #include "io/CaseConfig.hpp"
-#include "materials/LinearElastic.hpp"
+#include "materials/ConstitutiveModel.hpp"
+#include "physics/LiquidStateRule.hpp"
 #include "physics/Permeability.hpp"
+#include "physics/SuspensionViscosity.hpp"
 #include "points/LiquidPoints.hpp"
 #include "points/SolidPoints.hpp"
 #include "reservoir/ReservoirModel.hpp"
@@ -44,7 +47,8 @@ struct SolidMaterial {
     std::string name;
     Real grainDensity = 0;
     Real maxPorosity = 0;
-    LinearElastic elastic;
+    std::shared_ptr<const ConstitutiveModel> model;  ///< the skeleton's stress-strain law
+    SuspensionViscosity suspension;                  ///< viscosity once fluidised
     PermeabilityLaw permeability;
 };
 
@@ -110,6 +114,7 @@ private:
     void pointsToGrid();
     void computeForces();
     void solveNodes();
+    void switchLiquidState();
     void gridToPoints();
     void updatePressure();
     void exchangeAtBoundaries();
@@ -133,7 +138,7 @@ private:
 
     // cells
     std::vector<Index> solidCellStart_, liquidCellStart_, counts_;
-    std::vector<char> cellActive_, cellSubmerged_;
+    std::vector<char> cellActive_, cellSubmerged_, cellFluidised_;
     std::vector<Real> cellLiquidVolume_, cellPressure_, cellWeight_, cellPorosity_,
         cellPorosityGrad_, cellPressureIncrement_;
 
@@ -144,6 +149,7 @@ private:
     InflowChamber<D> chamber_;
     std::vector<char> dropFlags_;    ///< scratch of the outflow removal
 
+    LiquidStateRule stateRule_;
     GateLaw gateLaw_;
     Real dt_ = 0, time_ = 0, waveSpeed_ = 0;
     long steps_ = 0;

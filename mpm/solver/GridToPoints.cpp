@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "solver/DoublePointSolver.hpp"
+#include "materials/ConstitutiveModel.hpp"
 #include "materials/StressTensor.hpp"
 #include "solver/Parallel.hpp"
 
@@ -20,7 +21,7 @@ void DoublePointSolver<D>::gridToPoints() {
     Real extent[D];  // points stay inside the grid, axis by axis
     for (int d = 0; d < D; ++d) extent[d] = grid_.cells(d) * grid_.h();
     forAll(static_cast<Index>(solid_.size()), [&](Index p) {
-        Real dv[D] = {}, vNew[D] = {}, L[D][D] = {};
+        Real dv[D] = {}, vNew[D] = {}, L[D][D] = {}, gridPorosity = 0;
         forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
                       &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
@@ -29,6 +30,7 @@ void DoublePointSolver<D>::gridToPoints() {
                 vNew[d] += N * v;
                 for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
             }
+            gridPorosity += N * porosity_[i];
         });
         for (int d = 0; d < D; ++d) {
             solid_.v[p * D + d] += dv[d];  // FLIP: PIC would smear the jumps at porosity interfaces
@@ -42,21 +44,30 @@ void DoublePointSolver<D>::gridToPoints() {
         const auto& mat = materials_[solid_.material[p]];
         Real* s = &solid_.stress[p * 6];
         Real& n = solid_.porosity[p];
-        n = 1 - (1 - n) / (1 + dVol);  // solid mass balance, grains incompressible
-        solid_.volume[p] *= 1 + dVol;
-        if (solid_.state[p] == kFluidisedState) {
-            // fluidised material carries no effective stress; it turns back to solid when it
-            // compacts below n_max, restarting from zero effective stress
-            if (n < mat.maxPorosity && dVol < 0) solid_.state[p] = kSolidState;
+        const bool fluidised = cellFluidised_[solid_.shape.cell[p]];
+        if (fluidised || solid_.state[p] == kFluidisedState) {
+            // fluidised material (and material just resettling from it) takes its porosity from
+            // the grid, where the points' spacing shows, and a volume to match; its own mass
+            // balance drifts once the skeleton carries no stress (physics/LiquidStateRule.hpp)
+            n = std::clamp(gridPorosity, Real(1e-3), Real(0.99));
+            solid_.volume[p] = solid_.mass[p] / (mat.grainDensity * (1 - n));
+        }
+        if (fluidised) {
+            // no effective stress, only the suspension's viscous stress
+            solid_.state[p] = kFluidisedState;
+            mat.suspension.stress(n, dEps, dt, s);
+            solid_.stressReturn[p] = -1;
             return;
         }
-        mat.elastic.update(s, dEps);
-        tensionCutoff(s);
-        const bool zeroStress = s[0] == 0 && s[1] == 0 && s[2] == 0;
-        if (zeroStress && n >= mat.maxPorosity && dVol >= 0) {
-            solid_.state[p] = kFluidisedState;
+        if (solid_.state[p] == kFluidisedState) {
+            // resettled: a skeleton again, restarting from zero effective stress
+            solid_.state[p] = kSolidState;
             for (int k = 0; k < 6; ++k) s[k] = 0;
         }
+        n = 1 - (1 - n) / (1 + dVol);  // solid mass balance, grains incompressible
+        solid_.volume[p] *= 1 + dVol;
+        const StressPoint point{dEps, s, solid_.internal.data() + p * solid_.internalCount, dt};
+        solid_.stressReturn[p] = static_cast<int>(mat.model->update(point));
     });
 
     liquid_.strainVol.resize(liquid_.size());

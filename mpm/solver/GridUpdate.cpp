@@ -18,7 +18,6 @@ template <int D>
 void DoublePointSolver<D>::computeForces() {
     const Real g = config_.gravity, rhoL = config_.liquid.density;
     const Index nc = grid_.numCells();
-    const Real h = grid_.h();
 
     // Cell pore pressure p_c = sum p V* / sum V*, cell porosity and its gradient at the centre.
     forAll(nc, [&](Index c) {

@@ -49,14 +49,19 @@ void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver) {
     const auto& s = solver.solid();
     const auto& l = solver.liquid();
     std::vector<double> sState(s.state.begin(), s.state.end());
+    std::vector<double> sReturn(s.stressReturn.begin(), s.stressReturn.end());
     std::vector<double> lState(l.state.begin(), l.state.end());
     writer.beginStep(solver.time());
-    writer.writePointSet("solid", s.size(), s.x.data(),
-                         {{"velocity", s.v.data(), D, FieldKind::Vector},
-                          {"porosity", s.porosity.data(), 1},
-                          {"effective_stress", s.stress.data(), 6},
-                          {"volume", s.volume.data(), 1},
-                          {"state", sState.data(), 1}});
+    std::vector<PointField> solidFields = {{"velocity", s.v.data(), D, FieldKind::Vector},
+                                           {"porosity", s.porosity.data(), 1},
+                                           {"effective_stress", s.stress.data(), 6},
+                                           {"volume", s.volume.data(), 1},
+                                           {"state", sState.data(), 1},
+                                           {"stress_return", sReturn.data(), 1}};
+    // the constitutive models' state variables (Mohr-Coulomb: equivalent plastic strain,
+    // plastic volumetric strain)
+    if (s.internalCount > 0) solidFields.push_back({"state_variables", s.internal.data(), s.internalCount});
+    writer.writePointSet("solid", s.size(), s.x.data(), solidFields);
     writer.writePointSet("liquid", l.size(), l.x.data(),
                          {{"velocity", l.v.data(), D, FieldKind::Vector},
                           {"pore_pressure", l.pressure.data(), 1},

@@ -98,7 +98,7 @@ TEST(CaseLoader, MinimalCaseGetsTheDefaults) {
     ASSERT_EQ(c.materials.size(), 1u);
     const MaterialConfig& m = c.material("sand");
     EXPECT_EQ(m.name, "sand");
-    EXPECT_EQ(m.model, ConstitutiveModel::LinearElastic);
+    EXPECT_EQ(m.model, ConstitutiveModelKind::LinearElastic);
     EXPECT_DOUBLE_EQ(m.grainDensity, 2650.0);
     EXPECT_DOUBLE_EQ(m.porosity, 0.38);
     EXPECT_DOUBLE_EQ(m.maxPorosity, 0.41);
@@ -254,7 +254,7 @@ progress_interval = 5
     EXPECT_EQ(c.materials[0].name, "sand");
     EXPECT_EQ(c.materials[1].name, "gravel");
     const MaterialConfig& sand = c.material("sand");
-    EXPECT_EQ(sand.model, ConstitutiveModel::MohrCoulomb);
+    EXPECT_EQ(sand.model, ConstitutiveModelKind::MohrCoulomb);
     EXPECT_DOUBLE_EQ(sand.minPorosity, 0.3201);
     EXPECT_FALSE(sand.ergun);
     EXPECT_DOUBLE_EQ(sand.ergunA, 180.0);
@@ -352,7 +352,7 @@ TEST(CaseLoader, OutOfRangeValueNamesTheValueAndTheRange) {
         replaced(kMinimal, "porosity = 0.38", "porosity = 0.38\npoisson_ratio = 0.5");
     expectError(poisson, "materials.sand.poisson_ratio", lineOf(poisson, "poisson_ratio"));
     const std::string dilatancy = replaced(
-        kMinimal, "porosity = 0.38", "porosity = 0.38\nfriction_angle = 30\ndilatancy_angle = 35");
+        kMinimal, "porosity = 0.38", "porosity = 0.38\nmodel = \"mohr_coulomb\"\nfriction_angle = 30\ndilatancy_angle = 35");
     expectError(dilatancy, "materials.sand.dilatancy_angle", lineOf(dilatancy, "dilatancy_angle"));
     const std::string gravity =
         replaced(kMinimal, "title = \"minimal\"", "title = \"m\"\ngravity = -9.81");
@@ -610,6 +610,36 @@ TEST_F(CaseDirectoryTest, OpenFoamCaseIsResolvedAgainstTheCaseDirectory) {
     EXPECT_DOUBLE_EQ(e.coupling.window, 0.002);
     EXPECT_THROW(parseCase(expl + "tolerance = 1e-4\n", kFile, dir_.string()), InputError);
     EXPECT_THROW(parseCase(kMinimal + "\n[coupling]\nscheme = \"explicit\"\n", kFile, dir_.string()), InputError);
+}
+
+
+TEST(CaseLoader, MohrCoulombConstantsBelongToMohrCoulombOnly) {
+    const std::string le = replaced(kMinimal, "porosity = 0.38", "porosity = 0.38\nfriction_angle = 30");
+    const std::string what = expectError(le, "materials.sand.friction_angle", lineOf(le, "friction_angle"));
+    EXPECT_NE(what.find("mohr_coulomb"), std::string::npos) << what;
+    const std::string mc = replaced(kMinimal, "porosity = 0.38",
+                                    "porosity = 0.38\nmodel = \"mohr_coulomb\"\ncohesion = 50\ntensile_strength = 20");
+    const CaseConfig c = parseCase(mc, kFile);
+    EXPECT_DOUBLE_EQ(c.materials[0].cohesion, 50.0);
+    EXPECT_DOUBLE_EQ(c.materials[0].tensileStrength, 20.0);
+    // the tension cut-off lies at or below the apex c cot(phi) = 86.6 Pa
+    const std::string beyond = replaced(mc, "tensile_strength = 20", "tensile_strength = 90");
+    const std::string why = expectError(beyond, "materials.sand.tensile_strength", lineOf(beyond, "tensile_strength"));
+    EXPECT_NE(why.find("apex"), std::string::npos) << why;
+    const std::string noCohesion = replaced(mc, "cohesion = 50\n", "");
+    expectError(noCohesion, "materials.sand.tensile_strength", lineOf(noCohesion, "tensile_strength"));
+}
+
+TEST(CaseLoader, ABedThatStartsFluidisedMayBeLooserThanNmax) {
+    const std::string loose = replaced(kMinimal, "porosity = 0.38", "porosity = 0.55");
+    const std::string what = expectError(loose, "materials.sand.porosity", lineOf(loose, "porosity = 0.55"));
+    EXPECT_NE(what.find("initial.state = \"fluidised\""), std::string::npos) << what;
+    const std::string fluid = replaced(loose, "[time]", "[initial]\nstate = \"fluidised\"\n\n[time]");
+    const CaseConfig c = parseCase(fluid, kFile);
+    EXPECT_EQ(c.initial.state, InitialState::Fluidised);
+    EXPECT_EQ(c.initial.stress, InitialStress::Zero);
+    const std::string k0 = replaced(fluid, "state = \"fluidised\"", "state = \"fluidised\"\nstress = \"k0\"");
+    expectError(k0, "initial.stress", lineOf(k0, "stress = \"k0\""));
 }
 
 }  // namespace

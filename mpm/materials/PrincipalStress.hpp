@@ -1,0 +1,62 @@
+#pragma once
+// Principal values and axes of a symmetric 3D stress (Voigt order xx, yy, zz, yz, xz, xy), for
+// returns in principal stress space: decompose, return the three values, reassemble with the same
+// axes (an isotropic return does not rotate them).
+//
+//   PrincipalStress ps(stress);        // ps.value[0] >= ps.value[1] >= ps.value[2]
+//   Real v[3] = {...};                 // returned principal values, same order
+//   ps.assemble(v, stress);
+//
+// A stress without shear components (every 1D column, and the initial K0 states) is already
+// principal: its values are only sorted, and reassembly writes the diagonal back exactly, with
+// no round-off from eigenvectors.
+#include <Eigen/Eigenvalues>
+#include <utility>
+
+#include "core/Types.hpp"
+
+namespace qs {
+
+class PrincipalStress {
+public:
+    explicit PrincipalStress(const Real* s) {
+        diagonal_ = s[3] == 0 && s[4] == 0 && s[5] == 0;
+        if (diagonal_) {
+            int order[3] = {0, 1, 2};
+            // sort the three diagonal entries, largest first (a stable three-element sort)
+            if (s[order[0]] < s[order[1]]) std::swap(order[0], order[1]);
+            if (s[order[1]] < s[order[2]]) std::swap(order[1], order[2]);
+            if (s[order[0]] < s[order[1]]) std::swap(order[0], order[1]);
+            for (int k = 0; k < 3; ++k) { axis_[k] = order[k]; value[k] = s[order[k]]; }
+            return;
+        }
+        Eigen::Matrix3d m;
+        m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
+        eig.computeDirect(m);  // closed form for 3x3: ascending eigenvalues
+        for (int k = 0; k < 3; ++k) {
+            value[k] = eig.eigenvalues()(2 - k);
+            axes_.col(k) = eig.eigenvectors().col(2 - k);
+        }
+    }
+
+    /// Writes the stress with principal values v (same order as value[]) and the original axes.
+    void assemble(const Real* v, Real* s) const {
+        if (diagonal_) {
+            for (int k = 0; k < 3; ++k) s[axis_[k]] = v[k];
+            return;
+        }
+        const Eigen::Matrix3d m = axes_ * Eigen::Vector3d(v[0], v[1], v[2]).asDiagonal() * axes_.transpose();
+        s[0] = m(0, 0); s[1] = m(1, 1); s[2] = m(2, 2);
+        s[3] = m(1, 2); s[4] = m(0, 2); s[5] = m(0, 1);
+    }
+
+    Real value[3];  ///< Pa, principal stresses, largest (least compressive) first
+
+private:
+    bool diagonal_ = false;
+    int axis_[3] = {0, 1, 2};  ///< diagonal case: the Voigt slot of each principal value
+    Eigen::Matrix3d axes_;     ///< general case: columns are the principal directions
+};
+
+}  // namespace qs

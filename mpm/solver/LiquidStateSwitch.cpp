@@ -1,0 +1,47 @@
+// Phase 4b of the double-point step: the liquid-state switch, decided per cell from the grid's
+// solid mass in the cell (physics/LiquidStateRule.hpp; docs/fluidisation.md). Runs after the
+// nodal solve, so that the cell's solid velocity divergence (compacting or not) is this step's,
+// and before the points are updated, which then take their cell's state.
+#include "materials/ConstitutiveModel.hpp"
+#include "solver/DoublePointSolver.hpp"
+#include "solver/Parallel.hpp"
+
+namespace qs {
+
+template <int D>
+void DoublePointSolver<D>::switchLiquidState() {
+    forAll(grid_.numCells(), [&](Index c) {
+        const Index first = solidCellStart_[c], last = solidCellStart_[c + 1];
+        if (first == last) {
+            cellFluidised_[c] = 0;
+            return;
+        }
+        // the cell's previous state is that of most of its solid mass; n_max the mass-weighted
+        // one of its materials; stress-free if every solid-state point carries no effective stress
+        Real mass = 0, fluidMass = 0, nMax = 0;
+        bool stressFree = true;
+        for (Index p = first; p < last; ++p) {
+            const Real m = solid_.mass[p];
+            mass += m;
+            nMax += m * materials_[solid_.material[p]].maxPorosity;
+            if (solid_.state[p] == kFluidisedState) fluidMass += m;
+            else if (!isStressFree(&solid_.stress[p * 6])) stressFree = false;
+        }
+        nMax /= mass;
+        // div v_S at the cell centre from this step's nodal velocities (extension positive)
+        Real divergence = 0;
+        grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
+            for (int a = 0; a < D; ++a) divergence += grid_.centreGradient(corner, a) * velS_[i * D + a];
+        });
+        const Real n = cellPorosity_[c];
+        const bool wasFluidised = 2 * fluidMass > mass;
+        cellFluidised_[c] = wasFluidised ? !stateRule_.turnsSolid(n, nMax, divergence)
+                                         : stateRule_.turnsFluidised(stressFree, n, nMax, divergence);
+    });
+}
+
+template void DoublePointSolver<1>::switchLiquidState();
+template void DoublePointSolver<2>::switchLiquidState();
+template void DoublePointSolver<3>::switchLiquidState();
+
+}  // namespace qs
