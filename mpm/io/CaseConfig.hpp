@@ -82,6 +82,7 @@ struct LiquidConfig {
     double cavitationPressure = 0.0;   ///< Pa (gauge), lowest pore pressure the liquid takes
     bool freeSurfaceZeroPressure = false;  ///< set p = 0 on free-surface liquid points
     double freeSurfaceFilling = 0.9;   ///< -, filling ratio below which a top cell is free surface
+    bool gridLiquidMass = true;        ///< nodal liquid mass rho_L n_i V_i below the free surface
 };
 
 struct PointsConfig {
@@ -93,6 +94,8 @@ struct InitialConfig {
     InitialState state = InitialState::Solid;  ///< Fluidised: a suspension, n0 >= n_max allowed
     InitialStress stress = InitialStress::K0;
     bool rigidSkeleton = false;        ///< solid held everywhere (seepage through a fixed bed)
+    double filterVelocity = 0.0;       ///< m/s, initial steady upward seepage q0 (pressure and
+                                       ///<    effective stress to match, liquid moving)
     bool undrainedSurcharge = false;   ///< start from the undrained state under the surcharge
     double gravityStageDuration = 0.0; ///< s, quasi-static stage before t = 0 (0: none)
     double gravityStageDamping = 0.05; ///< -, local damping alpha in that stage

@@ -43,9 +43,10 @@ constexpr const char* kLiquidKeys[] = {"density",
                                        "viscosity",
                                        "cavitation_pressure",
                                        "free_surface_zero_pressure",
-                                       "free_surface_filling"};
+                                       "free_surface_filling",
+                                       "grid_liquid_mass"};
 constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
-constexpr const char* kInitialKeys[] = {"state", "stress", "rigid_skeleton", "undrained_surcharge",
+constexpr const char* kInitialKeys[] = {"state", "stress", "rigid_skeleton", "filter_velocity", "undrained_surcharge",
                                         "gravity_stage_duration", "gravity_stage_damping"};
 constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
 constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
@@ -588,6 +589,7 @@ private:
         l.freeSurfaceZeroPressure = s.boolean("free_surface_zero_pressure", false);
         l.freeSurfaceFilling =
             s.optionalNumber("free_surface_filling", 0.9, between(0, true, 1, false));
+        l.gridLiquidMass = s.boolean("grid_liquid_mass", true);
     }
 
     void readMaterials(const Section& root) {
@@ -797,6 +799,10 @@ private:
             i.stress = s.choice("stress", InitialStress::K0, kStressOptions);
         }
         i.rigidSkeleton = s.boolean("rigid_skeleton", false);
+        i.filterVelocity = s.optionalNumber(
+            "filter_velocity", 0.0,
+            between(-std::numeric_limits<double>::infinity(), false, std::numeric_limits<double>::infinity(), false, "m/s"),
+            "upward filter velocity q0 of an initial steady seepage, m/s");
         i.undrainedSurcharge = s.boolean("undrained_surcharge", false);
         if (i.undrainedSurcharge && !(c_.loads.surcharge > 0.0))
             s.fail("undrained_surcharge",

@@ -5,6 +5,7 @@
 #include "core/Error.hpp"
 #include "materials/StressTensor.hpp"
 #include "physics/ClosedForms.hpp"
+#include "physics/Permeability.hpp"
 #include "solver/DoublePointSolver.hpp"
 
 namespace qs {
@@ -49,8 +50,8 @@ void appendSolid(SolidPoints<D>& s, const Vec<D>& x, Real V, Real n, Real rhoS, 
 }
 
 template <int D>
-void appendLiquid(LiquidPoints<D>& l, const Vec<D>& x, Real V, Real mass, Real p) {
-    for (int d = 0; d < D; ++d) { l.x.push_back(x[d]); l.v.push_back(0); }
+void appendLiquid(LiquidPoints<D>& l, const Vec<D>& x, Real V, Real mass, Real p, Real verticalVelocity) {
+    for (int d = 0; d < D; ++d) { l.x.push_back(x[d]); l.v.push_back(d == D - 1 ? verticalVelocity : 0); }
     l.mass.push_back(mass);
     l.volume.push_back(V);
     l.pressure.push_back(p);
@@ -84,18 +85,30 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
 
     auto hydrostatic = [&](Real z) { return std::max(Real(0), rhoL * g * (zWater - z)); };
 
-    // Buoyant weight of the layers above each layer's top, for the K0 procedure.
+    // Per layer, what rests on its top: the buoyant weight of the layers above (K0 procedure) and
+    // the excess pore pressure of an initial upward seepage at q0 through them (the head the
+    // layers above take, Darcy-Forchheimer at n0). The seepage force lifts the effective stress
+    // off the skeleton; at q0 = U_mf it carries the whole buoyant weight.
+    const Real q0 = config.initial.filterVelocity, mu = config.liquid.viscosity;
+    auto seepageGradient = [&](const MaterialConfig& m) {  // i gamma_w, Pa/m
+        const PermeabilityLaw law = PermeabilityLaw::from(m);
+        const Real kappa = law.kappa(m.porosity);
+        return mu * q0 / kappa + law.ergunFactor(m.porosity) * rhoL * q0 * std::abs(q0) / std::sqrt(kappa);
+    };
     const std::size_t nl = config.layers.size();
-    std::vector<Real> layerBottom(nl), overburden(nl, 0.0);
+    std::vector<Real> layerBottom(nl), overburden(nl, 0.0), seepageAbove(nl, 0.0);
     Real z = config.filterLevel();
     for (std::size_t k = 0; k < nl; ++k) { layerBottom[k] = z; z += config.layers[k].thickness; }
     for (std::size_t k = nl; k-- > 0;) {
         if (k + 1 < nl) {
             const auto& m = config.material(config.layers[k + 1].material);
-            overburden[k] = overburden[k + 1] +
-                            (1 - m.porosity) * (m.grainDensity - rhoL) * g * config.layers[k + 1].thickness;
+            const Real L = config.layers[k + 1].thickness;
+            overburden[k] = overburden[k + 1] + (1 - m.porosity) * (m.grainDensity - rhoL) * g * L;
+            seepageAbove[k] = seepageAbove[k + 1] + seepageGradient(m) * L;
         }
     }
+    const bool fluidised = config.initial.state == InitialState::Fluidised;
+    Real chamberExcess = 0;  // excess pore pressure at the filter, shared by the chamber water
 
     for (std::size_t k = 0; k < nl; ++k) {
         const auto& layer = config.layers[k];
@@ -105,6 +118,7 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
             if (materials[j].name == layer.material) matIndex = static_cast<int>(j);
         const Real n0 = mc.porosity;
         const Real gammaBuoyant = (1 - n0) * (mc.grainDensity - rhoL) * g;
+        const Real seepage = seepageGradient(mc);
         const Real zb = layerBottom[k], zt = zb + layer.thickness;
         const Index cells = cellsIn(layer.thickness, h);
         const Real Eoed = materials[matIndex].model->oedometricModulus();
@@ -115,16 +129,17 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
             const Real mv = 1 / Eoed;
             u0 = config.loads.surcharge * mv / (mv + n0 / config.liquid.bulkModulus);
         }
-        // A bed that starts fluidised is a suspension: no effective stress, its buoyant weight
-        // carried by the pore water as an excess pressure over hydrostatic.
-        const bool fluidised = config.initial.state == InitialState::Fluidised;
-        auto suspensionExcess = [&](Real z) {
-            return fluidised ? overburden[k] + gammaBuoyant * (zt - z) : Real(0);
+        // Excess pore pressure over hydrostatic: the seepage's head loss from the sand top, or in
+        // a bed that starts fluidised (a suspension, no effective stress) its whole buoyant weight.
+        auto buoyantWeight = [&](Real z) { return overburden[k] + gammaBuoyant * (zt - z); };
+        auto excess = [&](Real z) {
+            return fluidised ? buoyantWeight(z) : seepageAbove[k] + seepage * (zt - z);
         };
+        if (k == 0) chamberExcess = excess(zb);
         forEachLatticePoint(grid, spc, zb, zt, cells * spc, [&](const Vec<D>& x, Real V) {
             Real stress[6] = {0, 0, 0, 0, 0, 0};
             if (config.initial.stress == InitialStress::K0) {
-                const Real sv = -(overburden[k] + gammaBuoyant * (zt - x[D - 1]));
+                const Real sv = -std::max(Real(0), buoyantWeight(x[D - 1]) - excess(x[D - 1]));
                 stress[2] = sv;
                 stress[0] = stress[1] = mc.k0 * sv;
             }
@@ -138,30 +153,24 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
                         fluidised ? kFluidisedState : kSolidState);
         });
         forEachLatticePoint(grid, lpc, zb, zt, cells * lpc, [&](const Vec<D>& x, Real V) {
-            appendLiquid(liquid, x, V, n0 * rhoL * V, hydrostatic(x[D - 1]) + u0 + suspensionExcess(x[D - 1]));
+            appendLiquid(liquid, x, V, n0 * rhoL * V, hydrostatic(x[D - 1]) + u0 + excess(x[D - 1]),
+                         q0 / n0);
         });
     }
 
     // Free water: the chamber below the filter and the water above the sand. In an undrained
     // start the closed chamber shares the sand's excess pressure (it drains only upwards).
-    Real chamberExcess = 0;
-    if (config.initial.state == InitialState::Fluidised) {
-        // the chamber carries the whole suspension's buoyant weight
-        const auto& m = config.material(config.layers.front().material);
-        chamberExcess = overburden.front() +
-                        (1 - m.porosity) * (m.grainDensity - rhoL) * g * config.layers.front().thickness;
-    }
     if (config.initial.undrainedSurcharge) {
         const auto& m = config.material(config.layers.front().material);
         const Real mv = 1 / closed::oedometricModulus(m.youngsModulus, m.poissonRatio);
-        chamberExcess = config.loads.surcharge * mv / (mv + m.porosity / config.liquid.bulkModulus);
+        chamberExcess += config.loads.surcharge * mv / (mv + m.porosity / config.liquid.bulkModulus);
     }
     const int nzFree = freeWaterPointsPerCell(config);
     auto freeWater = [&](Real z0, Real z1, Real excess) {
         const Index nz = std::llround((z1 - z0) / h * nzFree);
         if (nz <= 0) return;
         forEachLatticePoint(grid, lpc, z0, z1, nz, [&](const Vec<D>& x, Real V) {
-            appendLiquid(liquid, x, V, rhoL * V, hydrostatic(x[D - 1]) + excess);
+            appendLiquid(liquid, x, V, rhoL * V, hydrostatic(x[D - 1]) + excess, q0);
         });
     };
     freeWater(0.0, config.filterLevel(), chamberExcess);

@@ -18,7 +18,9 @@ ColumnState DoublePointSolver<D>::columnState() const {
     s.gatePressure = gatePressure_;
     s.reservoirHead = reservoir_.head();
     s.sandSurface = sandSurface();
+    s.bedHeight = s.sandSurface - config_.filterLevel();
     s.waterSurface = waterSurface();
+    measureStates(s);
     for (Index row : monitorNodes_) {
         // q = n (v_L - v_S) on the grid, averaged over the section's nodes by footprint
         Real q = 0, a = 0;
@@ -57,6 +59,36 @@ ColumnState DoublePointSolver<D>::columnState() const {
         s.gradient = -slope / (config_.liquid.density * config_.gravity) - 1;
     }
     return s;
+}
+
+template <int D>
+void DoublePointSolver<D>::measureStates(ColumnState& s) const {
+    // per cell row: solid mass, and how much of it is fluidised
+    const Index rows = grid_.cells(D - 1);
+    std::vector<Real> mass(rows, 0.0), fluid(rows, 0.0);
+    Real total = 0, totalFluid = 0;
+    for (std::size_t p = 0; p < solid_.size(); ++p) {
+        const Index r = std::clamp<Index>(static_cast<Index>(solid_.x[p * D + D - 1] / grid_.h()), 0, rows - 1);
+        mass[r] += solid_.mass[p];
+        total += solid_.mass[p];
+        if (solid_.state[p] == kFluidisedState) {
+            fluid[r] += solid_.mass[p];
+            totalFluid += solid_.mass[p];
+        }
+    }
+    s.fluidisedShare = total > 0 ? totalFluid / total : 0.0;
+    // the front: the run of rows above the filter in the state of the lowest sand row, its top
+    // refined by the share of the next row still in that state (a row's state: most of its mass)
+    s.fluidisedFront = config_.filterLevel();
+    Index r = sandBottomRow_;
+    if (r >= rows || mass[r] <= 0) return;
+    const bool bottomFluid = 2 * fluid[r] > mass[r];
+    auto share = [&](Index k) {
+        if (mass[k] <= 0) return Real(0);
+        return bottomFluid ? fluid[k] / mass[k] : 1 - fluid[k] / mass[k];
+    };
+    while (r < rows && mass[r] > 0 && 2 * share(r) >= 1) ++r;
+    s.fluidisedFront = grid_.h() * (r + ((r < rows) ? share(r) : Real(0)));
 }
 
 template <int D>

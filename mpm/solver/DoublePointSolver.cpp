@@ -8,6 +8,7 @@
 #include "grid/ShapeFunctions.hpp"
 #include "materials/StressTensor.hpp"
 #include "physics/ClosedForms.hpp"
+#include "physics/DriftFlux.hpp"
 #include "solver/ColumnBuilder.hpp"
 #include "boundary/Overflow.hpp"
 #include "solver/Parallel.hpp"
@@ -18,6 +19,24 @@ namespace qs {
 
 namespace {
 Index roundCells(Real length, Real h) { return static_cast<Index>(std::llround(length / h)); }
+
+/// K_s = alpha h beta c / phi at n = n_max (physics/ParticlePressure.hpp): beta = d(drag)/dq per
+/// unit volume, c = phi dq/dn the kinematic wave speed of the equilibrium suspension.
+Real particlePressureModulus(const CaseConfig& config, const MaterialConfig& m, Real h) {
+    closed::SuspensionFlux flux;
+    flux.law = PermeabilityLaw::from(m);
+    flux.grainDensity = m.grainDensity;
+    flux.liquidDensity = config.liquid.density;
+    flux.gravity = config.gravity;
+    flux.viscosity = config.liquid.viscosity;
+    const Real n = m.maxPorosity, phi = 1 - n, dn = 1e-4;
+    const Real q = flux.equilibriumFlux(n);
+    const Real c = phi * (flux.equilibriumFlux(n + dn) - flux.equilibriumFlux(n - dn)) / (2 * dn);
+    const Real kappa = flux.law.kappa(n);
+    const Real beta = config.liquid.viscosity / kappa +
+                      2 * flux.law.ergunFactor(n) * config.liquid.density * q / std::sqrt(kappa);
+    return kParticlePressureAlpha * h * beta * c / phi;
+}
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -86,7 +105,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
 template <int D>
 void DoublePointSolver<D>::allocate() {
     const Index nn = grid_.numNodes(), nc = grid_.numCells();
-    for (auto* a : {&massS_, &massL_, &solidVolume_, &nodeVolume_, &porosity_, &dragA_, &dragB_,
+    for (auto* a : {&massS_, &massL_, &solidVolume_, &nodeVolume_, &porosity_, &sandPorosity_, &dragA_, &dragB_,
                     &drag_, &relSpeed_})
         a->assign(nn, 0.0);
     for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velSOld_, &velLOld_})
@@ -97,7 +116,7 @@ void DoublePointSolver<D>::allocate() {
     cellActive_.assign(nc, 0);
     cellSubmerged_.assign(nc, 0);
     cellFluidised_.assign(nc, 0);
-    for (auto* a : {&cellLiquidVolume_, &cellPressure_, &cellWeight_, &cellPorosity_,
+    for (auto* a : {&cellLiquidVolume_, &cellPressure_, &cellWeight_, &cellPorosity_, &cellSandPorosity_,
                     &cellPressureIncrement_})
         a->assign(nc, 0.0);
     cellPorosityGrad_.assign(nc * D, 0.0);
@@ -184,8 +203,9 @@ Real DoublePointSolver<D>::surchargeNow() const {
 template <int D>
 Real DoublePointSolver<D>::gateVelocityNow() const {
     if (config_.gate.mode != GateMode::Flux) return 0.0;
-    const Real v = config_.gate.flux, ramp = config_.gate.fluxRampTime;
-    return (ramp > 0 && time_ < ramp) ? v * time_ / ramp : v;
+    // from the initial seepage (at rest by default) to the gate's flux, linearly over the ramp
+    const Real v0 = config_.initial.filterVelocity, v = config_.gate.flux, ramp = config_.gate.fluxRampTime;
+    return (ramp > 0 && time_ < ramp) ? v0 + (v - v0) * time_ / ramp : v;
 }
 
 template <int D>

@@ -32,6 +32,7 @@
 #include "io/CaseConfig.hpp"
 #include "materials/ConstitutiveModel.hpp"
 #include "physics/LiquidStateRule.hpp"
+#include "physics/ParticlePressure.hpp"
 #include "physics/Permeability.hpp"
 #include "physics/SuspensionViscosity.hpp"
 #include "points/LiquidPoints.hpp"
@@ -49,6 +50,7 @@ struct SolidMaterial {
     Real maxPorosity = 0;
     std::shared_ptr<const ConstitutiveModel> model;  ///< the skeleton's stress-strain law
     SuspensionViscosity suspension;                  ///< viscosity once fluidised
+    ParticlePressure particlePressure;               ///< the suspension's grain pressure
     PermeabilityLaw permeability;
 };
 
@@ -59,6 +61,11 @@ struct ColumnState {
     Real gatePressure = 0;        ///< Pa at the gate plane
     Real reservoirHead = 0;       ///< m above the gate plane
     Real sandSurface = 0;         ///< m, top of the highest solid point
+    Real bedHeight = 0;           ///< m, sand surface above the filter
+    Real fluidisedFront = 0;      ///< m, where the state first changes above the filter: the top
+                                  ///<    of a fluidised zone grown from the filter (expansion), or
+                                  ///<    of the resettled bed under a suspension (settling)
+    Real fluidisedShare = 0;      ///< -, fluidised share of the solid mass
     Real waterSurface = 0;        ///< m, free surface from the liquid mass above the sand
     Real gradient = 0;            ///< -, hydraulic gradient fitted over the interior sand cells
     std::vector<Real> monitorFlux;  ///< m/s, filter velocity q = n (v_L - v_S) per monitor
@@ -126,6 +133,8 @@ private:
     Real waterSurface() const;
     Real sandSurface() const;
     Real surchargeNow() const;
+    void measureStates(ColumnState& s) const;
+    bool liquidFilled(Index node) const;
     Real gateVelocityNow() const;
 
     const CaseConfig& config_;
@@ -139,12 +148,12 @@ private:
     // cells
     std::vector<Index> solidCellStart_, liquidCellStart_, counts_;
     std::vector<char> cellActive_, cellSubmerged_, cellFluidised_;
-    std::vector<Real> cellLiquidVolume_, cellPressure_, cellWeight_, cellPorosity_,
+    std::vector<Real> cellLiquidVolume_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,
         cellPorosityGrad_, cellPressureIncrement_;
 
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_, velSOld_,
-        velLOld_, solidVolume_, nodeVolume_, porosity_, dragA_, dragB_, drag_, relSpeed_;
+        velLOld_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
     BoundaryMasks<D> masks_;
     InflowChamber<D> chamber_;
     std::vector<char> dropFlags_;    ///< scratch of the outflow removal

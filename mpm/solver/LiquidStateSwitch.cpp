@@ -33,7 +33,7 @@ void DoublePointSolver<D>::switchLiquidState() {
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             for (int a = 0; a < D; ++a) divergence += grid_.centreGradient(corner, a) * velS_[i * D + a];
         });
-        const Real n = cellPorosity_[c];
+        const Real n = cellSandPorosity_[c];
         const bool wasFluidised = 2 * fluidMass > mass;
         cellFluidised_[c] = wasFluidised ? !stateRule_.turnsSolid(n, nMax, divergence)
                                          : stateRule_.turnsFluidised(stressFree, n, nMax, divergence);

@@ -23,8 +23,9 @@ namespace qs {
 namespace fs = std::filesystem;
 
 std::vector<std::string> seriesColumns(const CaseConfig& config) {
-    std::vector<std::string> c = {"time", "gate_flux", "gate_pressure", "reservoir_head",
-                                  "sand_surface", "water_surface", "gradient"};
+    std::vector<std::string> c = {"time",         "gate_flux",  "gate_pressure",   "reservoir_head",
+                                  "sand_surface", "bed_height", "fluidised_front", "fluidised_share",
+                                  "water_surface", "gradient"};
     for (const auto& m : config.monitors) c.push_back("q_" + m.name);
     for (const char* k : {"cumulative_inflow", "cumulative_outflow", "injected_volume", "ledger_residual",
                           "solid_mass", "liquid_mass", "solid_points", "liquid_points"})
@@ -35,7 +36,8 @@ std::vector<std::string> seriesColumns(const CaseConfig& config) {
 namespace {
 
 std::vector<double> seriesRow(const ColumnState& s) {
-    std::vector<double> r = {s.time, s.gateFlux, s.gatePressure, s.reservoirHead, s.sandSurface,
+    std::vector<double> r = {s.time,        s.gateFlux,  s.gatePressure,   s.reservoirHead,
+                             s.sandSurface, s.bedHeight, s.fluidisedFront, s.fluidisedShare,
                              s.waterSurface, s.gradient};
     for (Real q : s.monitorFlux) r.push_back(q);
     for (double v : {s.cumulativeInflow, s.cumulativeOutflow, s.injectedVolume, s.ledgerResidual, s.solidMass,
