@@ -20,22 +20,18 @@ namespace qs {
 namespace {
 Index roundCells(Real length, Real h) { return static_cast<Index>(std::llround(length / h)); }
 
-/// K_s = alpha h beta c / phi at n = n_max (physics/ParticlePressure.hpp): beta = d(drag)/dq per
-/// unit volume, c = phi dq/dn the kinematic wave speed of the equilibrium suspension.
-Real particlePressureModulus(const CaseConfig& config, const MaterialConfig& m, Real h) {
+/// D = alpha h c at n = n_max (physics/FrontDiffusion.hpp), c = phi dq/dn the kinematic wave
+/// speed of the equilibrium suspension.
+Real frontDiffusivity(const CaseConfig& config, const MaterialConfig& m, Real h) {
     closed::SuspensionFlux flux;
     flux.law = PermeabilityLaw::from(m);
     flux.grainDensity = m.grainDensity;
     flux.liquidDensity = config.liquid.density;
     flux.gravity = config.gravity;
     flux.viscosity = config.liquid.viscosity;
-    const Real n = m.maxPorosity, phi = 1 - n, dn = 1e-4;
-    const Real q = flux.equilibriumFlux(n);
-    const Real c = phi * (flux.equilibriumFlux(n + dn) - flux.equilibriumFlux(n - dn)) / (2 * dn);
-    const Real kappa = flux.law.kappa(n);
-    const Real beta = config.liquid.viscosity / kappa +
-                      2 * flux.law.ergunFactor(n) * config.liquid.density * q / std::sqrt(kappa);
-    return kParticlePressureAlpha * h * beta * c / phi;
+    const Real n = std::min(m.maxPorosity, 0.9), dn = 1e-4;
+    const Real c = (1 - n) * (flux.equilibriumFlux(n + dn) - flux.equilibriumFlux(n - dn)) / (2 * dn);
+    return kFrontDiffusionAlpha * h * std::max(c, Real(0));
 }
 }  // namespace
 
@@ -62,6 +58,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.suspension.waterViscosity = config.liquid.viscosity;
         s.suspension.maxPacking = 1 - m.minPorosity;
         s.permeability = PermeabilityLaw::from(m);
+        s.frontDiffusivity = frontDiffusivity(config, m, h);
         materials_.push_back(s);
     }
     // dt = C h / c_fast: with implicit drag the fastest explicit wave is the zero-drag fast wave.
@@ -99,6 +96,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
     sortPoints();
     classifyCells();
     pointsToGrid();
+    measureSandPorosity();
     computeForces();
 }
 
@@ -108,7 +106,8 @@ void DoublePointSolver<D>::allocate() {
     for (auto* a : {&massS_, &massL_, &solidVolume_, &nodeVolume_, &porosity_, &sandPorosity_, &dragA_, &dragB_,
                     &drag_, &relSpeed_})
         a->assign(nn, 0.0);
-    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velSOld_, &velLOld_})
+    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velSOld_, &velLOld_,
+                    &diffusionS_, &diffusionL_})
         a->assign(nn * D, 0.0);
     solidCellStart_.assign(nc + 1, 0);
     liquidCellStart_.assign(nc + 1, 0);
@@ -116,6 +115,9 @@ void DoublePointSolver<D>::allocate() {
     cellActive_.assign(nc, 0);
     cellSubmerged_.assign(nc, 0);
     cellFluidised_.assign(nc, 0);
+    cellStressFree_.assign(nc, 0);
+    cellSandSurface_.assign(nc, 0);
+    cellDiffusivity_.assign(nc, 0.0);
     for (auto* a : {&cellLiquidVolume_, &cellPressure_, &cellWeight_, &cellPorosity_, &cellSandPorosity_,
                     &cellPressureIncrement_})
         a->assign(nc, 0.0);
@@ -149,9 +151,11 @@ void DoublePointSolver<D>::step() {
     sortPoints();
     classifyCells();
     pointsToGrid();
+    measureSandPorosity();
     computeForces();
     solveNodes();
     switchLiquidState();
+    diffuseFronts();
     gridToPoints();
     updatePressure();
     exchangeAtBoundaries();

@@ -11,15 +11,17 @@
 // One step, as named phases over plain arrays (structure of arrays, OpenMP, no allocation):
 //   1 sortPoints          points by cell; active cells; liquid weights V*; free surface
 //   2 pointsToGrid        lumped masses, momenta, nodal porosity, drag coefficients
+//   2b measureSandPorosity  the sand's own porosity per cell (the surface's top cells corrected)
 //   3 computeForces       gravity, effective stress, cell pore pressure, gate and surface tractions
 //   4 solveNodes          predictors, implicit drag, filter / walls / gate
 //   4b switchLiquidState  per cell: solid or fluidised (physics/LiquidStateRule.hpp)
+//   4c diffuseFronts      kinematic diffusion where the sand carries no stress (FrontDiffusion)
 //   5 gridToPoints        FLIP velocities, positions, strains, stress, porosity, liquid volume
 //   6 updatePressure      cell pore-pressure increment from the mixed volumetric strain
 //   7 exchangeAtBoundaries  inflow injection, outflow removal, ledger, reservoir
 // Every phase is deterministic: results do not depend on the number of OpenMP threads.
 // The phases live in their own files: PointsToGrid.cpp (1, 2), GridUpdate.cpp (3, 4),
-// LiquidStateSwitch.cpp (4b), GridToPoints.cpp (5, 6), BoundaryExchange.cpp (7); set-up and the step itself here in
+// LiquidStateSwitch.cpp (4b), FrontDiffusion.cpp (4c), GridToPoints.cpp (5, 6), BoundaryExchange.cpp (7); set-up and the step itself here in
 // DoublePointSolver.cpp, the measurements in ColumnMeasurements.cpp, checkpoints in
 // SolverCheckpoint.cpp.
 #include <memory>
@@ -32,7 +34,7 @@
 #include "io/CaseConfig.hpp"
 #include "materials/ConstitutiveModel.hpp"
 #include "physics/LiquidStateRule.hpp"
-#include "physics/ParticlePressure.hpp"
+#include "physics/FrontDiffusion.hpp"
 #include "physics/Permeability.hpp"
 #include "physics/SuspensionViscosity.hpp"
 #include "points/LiquidPoints.hpp"
@@ -50,7 +52,7 @@ struct SolidMaterial {
     Real maxPorosity = 0;
     std::shared_ptr<const ConstitutiveModel> model;  ///< the skeleton's stress-strain law
     SuspensionViscosity suspension;                  ///< viscosity once fluidised
-    ParticlePressure particlePressure;               ///< the suspension's grain pressure
+    Real frontDiffusivity = 0;                       ///< m2/s, D (physics/FrontDiffusion.hpp)
     PermeabilityLaw permeability;
 };
 
@@ -119,9 +121,11 @@ private:
     void sortPoints();
     void classifyCells();
     void pointsToGrid();
+    void measureSandPorosity();
     void computeForces();
     void solveNodes();
     void switchLiquidState();
+    void diffuseFronts();
     void gridToPoints();
     void updatePressure();
     void exchangeAtBoundaries();
@@ -147,13 +151,15 @@ private:
 
     // cells
     std::vector<Index> solidCellStart_, liquidCellStart_, counts_;
-    std::vector<char> cellActive_, cellSubmerged_, cellFluidised_;
+    std::vector<char> cellActive_, cellSubmerged_, cellFluidised_, cellStressFree_, cellSandSurface_;
+    std::vector<Real> cellDiffusivity_;
     std::vector<Real> cellLiquidVolume_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,
         cellPorosityGrad_, cellPressureIncrement_;
 
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_, velSOld_,
-        velLOld_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
+        velLOld_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_,
+        diffusionS_, diffusionL_;
     BoundaryMasks<D> masks_;
     InflowChamber<D> chamber_;
     std::vector<char> dropFlags_;    ///< scratch of the outflow removal

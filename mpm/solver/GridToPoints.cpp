@@ -26,11 +26,13 @@ void DoublePointSolver<D>::gridToPoints() {
                       &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
                 const Real v = velS_[i * D + d];
+                // the front diffusion moves the point, it is not part of its (FLIP) velocity
+                const Real moved = v + diffusionS_[i * D + d];
                 dv[d] += N * (v - velSOld_[i * D + d]);
-                vNew[d] += N * v;
-                for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
+                vNew[d] += N * moved;
+                for (int e = 0; e < D; ++e) L[d][e] += moved * gradN[e];
             }
-            gridPorosity += N * porosity_[i];
+            gridPorosity += N * sandPorosity_[i];
         });
         for (int d = 0; d < D; ++d) {
             solid_.v[p * D + d] += dv[d];  // FLIP: PIC would smear the jumps at porosity interfaces
@@ -49,6 +51,8 @@ void DoublePointSolver<D>::gridToPoints() {
             // fluidised material (and material just resettling from it) takes its porosity from
             // the grid, where the points' spacing shows, and a volume to match; its own mass
             // balance drifts once the skeleton carries no stress (physics/LiquidStateRule.hpp)
+            const Index cell = solid_.shape.cell[p];
+            if (cellSandSurface_[cell]) gridPorosity = cellSandPorosity_[cell];  // at the sand's top
             n = std::clamp(gridPorosity, Real(1e-3), Real(0.99));
             solid_.volume[p] = solid_.mass[p] / (mat.grainDensity * (1 - n));
         }
@@ -77,9 +81,10 @@ void DoublePointSolver<D>::gridToPoints() {
                       &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
                 const Real v = velL_[i * D + d];
+                const Real moved = v + diffusionL_[i * D + d];
                 dv[d] += N * (v - velLOld_[i * D + d]);
-                vNew[d] += N * v;
-                div += v * gradN[d];
+                vNew[d] += N * moved;
+                div += moved * gradN[d];
             }
         });
         for (int d = 0; d < D; ++d) {

@@ -28,16 +28,14 @@ void DoublePointSolver<D>::computeForces() {
         }
         cellWeight_[c] = w;
         cellPressure_[c] = w > 0 ? pv / w : 0.0;
-        Real n = 0, sand = 0;
+        Real n = 0;
         Real grad[D] = {};
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             const Real ni = porosity_[i];
             n += ni / (1 << D);
-            sand += sandPorosity_[i] / (1 << D);
             for (int a = 0; a < D; ++a) grad[a] += grid_.centreGradient(corner, a) * ni;
         });
         cellPorosity_[c] = n;
-        cellSandPorosity_[c] = sand;
         for (int a = 0; a < D; ++a) cellPorosityGrad_[c * D + a] = grad[a];
     });
 

@@ -14,20 +14,23 @@ void DoublePointSolver<D>::switchLiquidState() {
         const Index first = solidCellStart_[c], last = solidCellStart_[c + 1];
         if (first == last) {
             cellFluidised_[c] = 0;
+            cellStressFree_[c] = 0;
             return;
         }
         // the cell's previous state is that of most of its solid mass; n_max the mass-weighted
         // one of its materials; stress-free if every solid-state point carries no effective stress
-        Real mass = 0, fluidMass = 0, nMax = 0;
+        Real mass = 0, fluidMass = 0, nMax = 0, diffusivity = 0;
         bool stressFree = true;
         for (Index p = first; p < last; ++p) {
             const Real m = solid_.mass[p];
             mass += m;
             nMax += m * materials_[solid_.material[p]].maxPorosity;
+            diffusivity += m * materials_[solid_.material[p]].frontDiffusivity;
             if (solid_.state[p] == kFluidisedState) fluidMass += m;
             else if (!isStressFree(&solid_.stress[p * 6])) stressFree = false;
         }
         nMax /= mass;
+        cellDiffusivity_[c] = diffusivity / mass;
         // div v_S at the cell centre from this step's nodal velocities (extension positive)
         Real divergence = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
@@ -37,6 +40,8 @@ void DoublePointSolver<D>::switchLiquidState() {
         const bool wasFluidised = 2 * fluidMass > mass;
         cellFluidised_[c] = wasFluidised ? !stateRule_.turnsSolid(n, nMax, divergence)
                                          : stateRule_.turnsFluidised(stressFree, n, nMax, divergence);
+        // the sand here carries no effective stress: fronts diffuse (FrontDiffusion.cpp)
+        cellStressFree_[c] = cellFluidised_[c] || (stressFree && fluidMass == 0);
     });
 }
 

@@ -191,19 +191,65 @@ void DoublePointSolver<D>::pointsToGrid() {
     });
 }
 
+// ---------------------------------------------------------------------------------------------
+// 2b the sand's own porosity per cell (the liquid-state switch, fluidised points)
+// ---------------------------------------------------------------------------------------------
+
+template <int D>
+void DoublePointSolver<D>::measureSandPorosity() {
+    // the mean of the cell's nodal sand porosities: the grid's solid mass in the cell
+    forAll(grid_.numCells(), [&](Index c) {
+        Real sand = 0;
+        grid_.forEachNodeOfCell(c, [&](Index i, int) { sand += sandPorosity_[i] / (1 << D); });
+        cellSandPorosity_[c] = sand;
+        cellSandSurface_[c] = 0;
+    });
+    // At the top of the sand the grid cannot tell a loose cell from a half-filled one: the sand
+    // surface lies inside the top sand cell, whose nodes then see too little solid, and so does
+    // the top node of the cell below it. Per column of cells, the top two sand cells take the
+    // porosity of the last node below them whose cells are all filled (the bottom node row of
+    // the second cell), so a packed bed rising as a plug, or the top of a suspension, keeps its
+    // porosity up to its surface.
+    const Index up = grid_.cellStride(D - 1), rows = grid_.cells(D - 1);
+    const Index columns = grid_.numCells() / rows;
+    auto hasSand = [&](Index c) { return solidCellStart_[c + 1] > solidCellStart_[c]; };
+    forAll(columns, [&](Index col) {
+        for (Index row = rows - 1; row >= 2; --row) {
+            const Index top = col + row * up;
+            if (!hasSand(top)) continue;
+            const Index below = top - up, base = below - up;
+            if (!hasSand(below) || !hasSand(base)) break;
+            Real n = 0;  // the bottom node row of `below` = the top node row of `base`
+            int count = 0;
+            grid_.forEachNodeOfCell(base, [&](Index i, int corner) {
+                if ((corner >> (D - 1)) & 1) { n += sandPorosity_[i]; ++count; }
+            });
+            n /= count;
+            for (Index c : {top, below}) {
+                cellSandPorosity_[c] = n;
+                cellSandSurface_[c] = 1;
+            }
+            break;
+        }
+    });
+}
+
 template void DoublePointSolver<1>::sortPoints();
 template void DoublePointSolver<1>::classifyCells();
 template void DoublePointSolver<1>::pointsToGrid();
+template void DoublePointSolver<1>::measureSandPorosity();
 template void DoublePointSolver<1>::computeShape(SolidPoints<1>&, std::vector<Index>&, std::vector<Index>&);
 template void DoublePointSolver<1>::computeShape(LiquidPoints<1>&, std::vector<Index>&, std::vector<Index>&);
 template void DoublePointSolver<2>::sortPoints();
 template void DoublePointSolver<2>::classifyCells();
 template void DoublePointSolver<2>::pointsToGrid();
+template void DoublePointSolver<2>::measureSandPorosity();
 template void DoublePointSolver<2>::computeShape(SolidPoints<2>&, std::vector<Index>&, std::vector<Index>&);
 template void DoublePointSolver<2>::computeShape(LiquidPoints<2>&, std::vector<Index>&, std::vector<Index>&);
 template void DoublePointSolver<3>::sortPoints();
 template void DoublePointSolver<3>::classifyCells();
 template void DoublePointSolver<3>::pointsToGrid();
+template void DoublePointSolver<3>::measureSandPorosity();
 template void DoublePointSolver<3>::computeShape(SolidPoints<3>&, std::vector<Index>&, std::vector<Index>&);
 template void DoublePointSolver<3>::computeShape(LiquidPoints<3>&, std::vector<Index>&, std::vector<Index>&);
 
