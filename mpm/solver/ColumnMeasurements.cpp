@@ -112,7 +112,11 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         const Index r = std::clamp<Index>(static_cast<Index>(solid_.x[p * D + D - 1] / grid_.h()), 0, rows - 1);
         out[r].verticalStress += solid_.stress[p * 6 + 2];
         out[r].horizontalStress += solid_.stress[p * 6 + 0];
-        out[r].porosity += solid_.porosity[p];
+        const Real n = solid_.porosity[p];
+        out[r].minPorosity = out[r].solidCount ? std::min(out[r].minPorosity, n) : n;
+        out[r].maxPorosity = out[r].solidCount ? std::max(out[r].maxPorosity, n) : n;
+        out[r].porosity += n;
+        if (solid_.state[p] == kFluidisedState) out[r].fluidisedShare += 1;
         ++out[r].solidCount;
     }
     for (Index r = 0; r < rows; ++r) {
@@ -121,6 +125,7 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
             row.verticalStress /= row.solidCount;
             row.horizontalStress /= row.solidCount;
             row.porosity /= row.solidCount;
+            row.fluidisedShare /= row.solidCount;
         }
         Real q = 0, a = 0;
         for (Index i = r * grid_.nodeStride(D - 1); i < (r + 1) * grid_.nodeStride(D - 1); ++i) {

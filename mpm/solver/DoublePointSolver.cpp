@@ -106,8 +106,8 @@ void DoublePointSolver<D>::allocate() {
     for (auto* a : {&massS_, &massL_, &solidVolume_, &nodeVolume_, &porosity_, &sandPorosity_, &dragA_, &dragB_,
                     &drag_, &relSpeed_})
         a->assign(nn, 0.0);
-    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velSOld_, &velLOld_,
-                    &diffusionS_, &diffusionL_})
+    diffusionNode_.assign(nn, 0);
+    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velSOld_, &velLOld_})
         a->assign(nn * D, 0.0);
     solidCellStart_.assign(nc + 1, 0);
     liquidCellStart_.assign(nc + 1, 0);

@@ -87,6 +87,8 @@ struct CellRow {
     Real verticalStress = 0;      ///< Pa, mean sigma'_zz of the row's solid points (tension +)
     Real horizontalStress = 0;    ///< Pa, mean sigma'_xx
     Real porosity = 0;            ///< -, mean of the row's solid points
+    Real minPorosity = 0, maxPorosity = 0;  ///< -, the row's solid points' extremes
+    Real fluidisedShare = 0;      ///< -, share of the row's solid points that are fluidised
     Real filterVelocity = 0;      ///< m/s, q at the row's lower node
     int solidCount = 0, liquidCount = 0;
 };
@@ -158,8 +160,8 @@ private:
 
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_, velSOld_,
-        velLOld_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_,
-        diffusionS_, diffusionL_;
+        velLOld_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
+    std::vector<char> diffusionNode_;  ///< nodes where the front diffusion acts
     BoundaryMasks<D> masks_;
     InflowChamber<D> chamber_;
     std::vector<char> dropFlags_;    ///< scratch of the outflow removal

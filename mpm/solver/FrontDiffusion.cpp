@@ -1,12 +1,14 @@
-// Phase 4c of the double-point step: the kinematic front diffusion of physics/FrontDiffusion.hpp.
-// Per node whose cells with sand all carry no effective stress (fluidised, or a skeleton at its
-// tension cut-off / apex): a diffusion velocity of the solid, w_S = -D grad(phi)/phi, and the
-// liquid's w_L = -(1-n) w_S / n that keeps the mixture's volume flux, for the points' displacement
-// and strain only (GridToPoints.cpp). Elsewhere, and in held components (filter, walls, a rigid
-// skeleton), zero.
-#include <algorithm>
-#include <cmath>
-
+// Phase 4c of the double-point step: where the kinematic front diffusion of
+// physics/FrontDiffusion.hpp acts. A node takes part when every cell around it holds sand that
+// carries no effective stress (fluidised, or a skeleton at its tension cut-off / apex); a point
+// diffuses when its whole stencil does. Not in the top two sand cells (phi drops to zero at the
+// surface, a strong front that needs no help, and whose porosity the grid cannot resolve), nor
+// next to the filter or a wall (held components).
+// GridToPoints.cpp moves the points: per point, from the grid's solid fraction at its stencil,
+//   w_S = -D grad(phi) / phi   (grad from the shape-function gradients: compact, so that no
+//                               grid mode of phi, the odd-even one included, escapes it)
+//   w_L = -(1 - n) w_S / n     (the liquid: the mixture's volume flux is unchanged)
+// added to the displacement, not to the (FLIP) velocity.
 #include "solver/DoublePointSolver.hpp"
 #include "solver/Parallel.hpp"
 
@@ -15,35 +17,16 @@ namespace qs {
 template <int D>
 void DoublePointSolver<D>::diffuseFronts() {
     forAll(grid_.numNodes(), [&](Index i) {
-        Real* wS = &diffusionS_[i * D];
-        Real* wL = &diffusionL_[i * D];
-        for (int a = 0; a < D; ++a) wS[a] = wL[a] = 0;
-        if (massS_[i] <= 0) return;
-        // Only inside the sand: every cell around the node holds sand carrying no effective
-        // stress (at the sand's surface phi drops to zero, and that edge is not to be spread).
-        // grad(phi) from the cells' own sand porosities (measureSandPorosity: the surface's top
-        // cells corrected), D their mean diffusivity.
-        Real up[D] = {}, down[D] = {}, diffusivity = 0;
+        bool inside = massS_[i] > 0;
         int cells = 0;
-        bool inside = true;
-        grid_.forEachCellOfNode(i, [&](Index c, int corner) {
-            if (solidCellStart_[c + 1] == solidCellStart_[c] || !cellStressFree_[c]) inside = false;
+        grid_.forEachCellOfNode(i, [&](Index c, int) {
+            if (solidCellStart_[c + 1] == solidCellStart_[c] || !cellStressFree_[c] || cellSandSurface_[c])
+                inside = false;
             ++cells;
-            diffusivity += cellDiffusivity_[c];
-            // corner bit a set: the node is the cell's upper node along a, so the cell lies below
-            for (int a = 0; a < D; ++a) ((corner >> a) & 1 ? down : up)[a] += 1 - cellSandPorosity_[c];
         });
-        if (!inside || cells < (1 << D)) return;
-        Real grad[D];
-        for (int a = 0; a < D; ++a) grad[a] = (up[a] - down[a]) / ((1 << (D - 1)) * grid_.h());
-        const Real phi = std::max(Real(1e-3), 1 - sandPorosity_[i]);
-        const Real n = porosity_[i];
-        const Real k = diffusivity / (cells * phi);  // D / phi
-        for (int a = 0; a < D; ++a) {
-            if (masks_.solidFixed[i * D + a]) continue;
-            wS[a] = -k * grad[a];
-            if (massL_[i] > 0 && !masks_.liquidFixed[i * D + a] && n < 1) wL[a] = -(1 - n) * wS[a] / n;
-        }
+        for (int a = 0; a < D; ++a)
+            if (masks_.solidFixed[i * D + a]) inside = false;
+        diffusionNode_[i] = inside && cells == (1 << D);
     });
 }
 

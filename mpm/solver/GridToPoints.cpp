@@ -21,22 +21,26 @@ void DoublePointSolver<D>::gridToPoints() {
     Real extent[D];  // points stay inside the grid, axis by axis
     for (int d = 0; d < D; ++d) extent[d] = grid_.cells(d) * grid_.h();
     forAll(static_cast<Index>(solid_.size()), [&](Index p) {
-        Real dv[D] = {}, vNew[D] = {}, L[D][D] = {}, gridPorosity = 0;
+        Real dv[D] = {}, vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
+        bool diffuses = true;
         forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
                       &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
                 const Real v = velS_[i * D + d];
-                // the front diffusion moves the point, it is not part of its (FLIP) velocity
-                const Real moved = v + diffusionS_[i * D + d];
                 dv[d] += N * (v - velSOld_[i * D + d]);
-                vNew[d] += N * moved;
-                for (int e = 0; e < D; ++e) L[d][e] += moved * gradN[e];
+                vNew[d] += N * v;
+                for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
+                gradPhi[d] -= gradN[d] * sandPorosity_[i];
             }
             gridPorosity += N * sandPorosity_[i];
+            if (N > 0 && !diffusionNode_[i]) diffuses = false;
         });
+        const Index cell = solid_.shape.cell[p];
         for (int d = 0; d < D; ++d) {
             solid_.v[p * D + d] += dv[d];  // FLIP: PIC would smear the jumps at porosity interfaces
-            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * vNew[d], Real(0), extent[d]);
+            // the front diffusion moves the point; it is not part of its (FLIP) velocity
+            const Real w = diffuses ? -cellDiffusivity_[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
+            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), Real(0), extent[d]);
         }
         Real dEps[6] = {};
         for (int d = 0; d < D; ++d)
@@ -46,14 +50,21 @@ void DoublePointSolver<D>::gridToPoints() {
         const auto& mat = materials_[solid_.material[p]];
         Real* s = &solid_.stress[p * 6];
         Real& n = solid_.porosity[p];
-        const bool fluidised = cellFluidised_[solid_.shape.cell[p]];
-        if (fluidised || solid_.state[p] == kFluidisedState) {
-            // fluidised material (and material just resettling from it) takes its porosity from
-            // the grid, where the points' spacing shows, and a volume to match; its own mass
-            // balance drifts once the skeleton carries no stress (physics/LiquidStateRule.hpp)
-            const Index cell = solid_.shape.cell[p];
-            if (cellSandSurface_[cell]) gridPorosity = cellSandPorosity_[cell];  // at the sand's top
-            n = std::clamp(gridPorosity, Real(1e-3), Real(0.99));
+        const bool fluidised = cellFluidised_[cell];
+        // the sand's porosity where the point is, from the grid (at the sand's top, the cell's)
+        if (cellSandSurface_[cell]) gridPorosity = cellSandPorosity_[cell];
+        gridPorosity = std::clamp(gridPorosity, Real(1e-3), Real(0.99));
+        // looser than the loosest packing the grains form no skeleton (no effective stress); a
+        // skeleton that carries stress loses it only beyond the switch's hysteresis band, so that
+        // the grid's sampling noise about n_max does not unload a consolidated sediment
+        const Real looseLimit = mat.maxPorosity + (isStressFree(s) ? 0 : stateRule_.hysteresis);
+        const bool noSkeleton = gridPorosity > looseLimit;
+        if (fluidised || solid_.state[p] == kFluidisedState || diffuses || noSkeleton) {
+            // fluidised material, material just resettling from it, sand without a skeleton and
+            // stress-free sand that the front diffusion moves take their porosity from the grid,
+            // where the points' spacing shows, and a volume to match: their own mass balance
+            // drifts once the skeleton carries no stress (physics/LiquidStateRule.hpp)
+            n = gridPorosity;
             solid_.volume[p] = solid_.mass[p] / (mat.grainDensity * (1 - n));
         }
         if (fluidised) {
@@ -72,24 +83,35 @@ void DoublePointSolver<D>::gridToPoints() {
         solid_.volume[p] *= 1 + dVol;
         const StressPoint point{dEps, s, solid_.internal.data() + p * solid_.internalCount, dt};
         solid_.stressReturn[p] = static_cast<int>(mat.model->update(point));
+        // a resettling bed settles onto its sediment without stress until it reaches n_max,
+        // and its skeleton takes stress from there on
+        if (noSkeleton)
+            for (int k = 0; k < 6; ++k) s[k] = 0;
     });
 
     liquid_.strainVol.resize(liquid_.size());
     forAll(static_cast<Index>(liquid_.size()), [&](Index p) {
-        Real dv[D] = {}, vNew[D] = {}, div = 0;
+        Real dv[D] = {}, vNew[D] = {}, div = 0, gradPhi[D] = {}, sand = 0, mixture = 0;
+        bool diffuses = true;
         forStencil<D>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
                       &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
                 const Real v = velL_[i * D + d];
-                const Real moved = v + diffusionL_[i * D + d];
                 dv[d] += N * (v - velLOld_[i * D + d]);
-                vNew[d] += N * moved;
-                div += moved * gradN[d];
+                vNew[d] += N * v;
+                div += v * gradN[d];
+                gradPhi[d] -= gradN[d] * sandPorosity_[i];
             }
+            sand += N * sandPorosity_[i];
+            mixture += N * porosity_[i];
+            if (N > 0 && !diffusionNode_[i]) diffuses = false;
         });
+        const Real k = diffuses ? cellDiffusivity_[liquid_.shape.cell[p]] / std::max(Real(1e-3), 1 - sand) : 0;
         for (int d = 0; d < D; ++d) {
             liquid_.v[p * D + d] += dv[d];
-            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + dt * vNew[d], Real(0), extent[d]);
+            // the liquid's share of the front diffusion: the mixture's volume flux stays
+            const Real w = diffuses ? (1 - mixture) / mixture * k * gradPhi[d] : 0;
+            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + dt * (vNew[d] + w), Real(0), extent[d]);
         }
         liquid_.strainVol[p] = dt * div;
         liquid_.volume[p] *= 1 + dt * div;  // V follows the liquid's own strain

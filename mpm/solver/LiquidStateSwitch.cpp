@@ -2,6 +2,8 @@
 // solid mass in the cell (physics/LiquidStateRule.hpp; docs/fluidisation.md). Runs after the
 // nodal solve, so that the cell's solid velocity divergence (compacting or not) is this step's,
 // and before the points are updated, which then take their cell's state.
+#include <algorithm>
+
 #include "materials/ConstitutiveModel.hpp"
 #include "solver/DoublePointSolver.hpp"
 #include "solver/Parallel.hpp"
@@ -36,9 +38,15 @@ void DoublePointSolver<D>::switchLiquidState() {
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             for (int a = 0; a < D; ++a) divergence += grid_.centreGradient(corner, a) * velS_[i * D + a];
         });
+        // the cell's porosity decides when it turns fluidised; its densest node when it resettles:
+        // a sediment grows into the cell from one side, and the rest of the cell, still looser
+        // than n_max, then settles onto it without a skeleton (GridToPoints.cpp)
         const Real n = cellSandPorosity_[c];
+        Real densest = 1;
+        grid_.forEachNodeOfCell(c, [&](Index i, int) { densest = std::min(densest, sandPorosity_[i]); });
+        if (cellSandSurface_[c]) densest = n;
         const bool wasFluidised = 2 * fluidMass > mass;
-        cellFluidised_[c] = wasFluidised ? !stateRule_.turnsSolid(n, nMax, divergence)
+        cellFluidised_[c] = wasFluidised ? !stateRule_.turnsSolid(densest, nMax, divergence)
                                          : stateRule_.turnsFluidised(stressFree, n, nMax, divergence);
         // the sand here carries no effective stress: fronts diffuse (FrontDiffusion.cpp)
         cellStressFree_[c] = cellFluidised_[c] || (stressFree && fluidMass == 0);

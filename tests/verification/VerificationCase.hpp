@@ -59,6 +59,28 @@ std::pair<double, double> fitLine(const std::vector<CellRow>& rows, F f) {
     return {(sy - b * sz) / n, b};
 }
 
+/// Least-squares line f(state) = a + b t over the outputs with t0 <= t <= t1, with its r^2.
+struct LineFit { double intercept = 0, slope = 0, r2 = 0; int points = 0; };
+template <class F>
+LineFit fitOverTime(const std::vector<ColumnState>& series, double t0, double t1, F f) {
+    double st = 0, sy = 0, stt = 0, sty = 0, syy = 0;
+    LineFit fit;
+    for (const auto& s : series) {
+        if (s.time < t0 || s.time > t1) continue;
+        const double y = f(s);
+        st += s.time; sy += y; stt += s.time * s.time; sty += s.time * y; syy += y * y;
+        ++fit.points;
+    }
+    const double n = fit.points;
+    if (n < 3) return fit;
+    fit.slope = (n * sty - st * sy) / (n * stt - st * st);
+    fit.intercept = (sy - fit.slope * st) / n;
+    const double ssTot = syy - sy * sy / n;
+    const double ssRes = syy - fit.intercept * sy - fit.slope * sty;
+    fit.r2 = ssTot > 0 ? 1 - ssRes / ssTot : 0;
+    return fit;
+}
+
 /// Mean of f(state) over the outputs with t >= t0.
 template <class F>
 double meanAfter(const std::vector<ColumnState>& series, double t0, F f) {

@@ -1,0 +1,111 @@
+// Verification problem 7 (physics.md section 4): bed expansion after a step in flux.
+// A packed bed at n1 = 0.38 and U1 = U_mf (zero effective stress) gets U2 = 1.380e-3 m/s. Drift
+// flux (Kynch): the bed below a shock expands to n2 = 0.452, the front rises at
+// s = (1-n1)(U2-U1)/(n2-n1) = 5.614e-3 m/s, the packed bed above rises as a plug at U2 - U1, and
+// the bed ends H2 = H1 (1-n1)/(1-n2) = 210.4 mm high.
+// Tolerances of physics.md: H2 2 %, plug speed 5 %, front speed 15 %; the expanded zone's
+// porosity: cell means within 0.01 of n2, single points within 0.03 (the fluidisation issue).
+// Tighter guards sit near what the method achieves (docs/verification.md has the numbers at three
+// grid sizes), so that a regression shows long before a tolerance is reached.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+
+#include "VerificationCase.hpp"
+#include "physics/DriftFlux.hpp"
+
+using namespace qs;
+using namespace qs::test;
+
+namespace {
+
+closed::SuspensionFlux fluxOf(const CaseConfig& c) {
+    closed::SuspensionFlux f;
+    const auto& m = c.material("sand");
+    f.law = PermeabilityLaw::from(m);
+    f.grainDensity = m.grainDensity;
+    f.liquidDensity = c.liquid.density;
+    f.gravity = c.gravity;
+    f.viscosity = c.liquid.viscosity;
+    return f;
+}
+
+struct Errors {
+    double height, plug, front, r2;
+    double cellPorosity, pointPorosity;  ///< the fully expanded bed at the end
+    double wakeCell, wakePoint;          ///< behind the front at three quarters of the expansion
+};
+
+Errors runExpansion(double cellSize) {
+    const CaseRun run = runVerificationCase("bed_expansion", [&](CaseConfig& c) { c.grid.cellSize = cellSize; });
+    const auto& c = run.config;
+    const auto flux = fluxOf(c);
+    const double n1 = c.material("sand").porosity, U1 = c.initial.filterVelocity, U2 = c.gate.flux;
+    const double H1 = c.sandTop() - c.filterLevel();
+    EXPECT_NEAR(U1, flux.equilibriumFlux(n1), 1e-4 * U1) << "the case starts at U_mf";
+    const auto e = closed::bedExpansion(flux, n1, U1, U2, H1);
+
+    Errors err{};
+    // plug: the bed's top rises at U2 - U1 until the front nears it (t < 0.8 of its arrival)
+    const LineFit plug = fitOverTime(run.series, 2.0, 0.8 * e.duration, [](const ColumnState& s) { return s.bedHeight; });
+    err.plug = plug.slope / e.plugSpeed - 1;
+    // front: from its first cells to where it nears the plug's top
+    const LineFit front = fitOverTime(run.series, 3.0, 0.85 * e.duration, [](const ColumnState& s) { return s.fluidisedFront; });
+    err.front = front.slope / e.frontSpeed - 1;
+    err.r2 = front.r2;
+    err.height = run.series.back().bedHeight / e.finalHeight - 1;
+    // the expanded zone: behind the front at three quarters of the expansion (rows a cell above
+    // the filter to three cells below the front), and at the end (to four cells below the
+    // surface, where the front arrived last)
+    auto zone = [&](std::size_t k, double zMax, double& cell, double& point) {
+        for (const auto& r : run.profiles[k]) {
+            if (r.solidCount == 0 || r.z < c.filterLevel() + 1.5 * cellSize || r.z > zMax) continue;
+            EXPECT_EQ(r.fluidisedShare, 1.0) << "t = " << run.series[k].time << ", z = " << r.z;
+            cell = std::max(cell, std::abs(r.porosity - e.expandedPorosity));
+            point = std::max({point, std::abs(r.minPorosity - e.expandedPorosity),
+                              std::abs(r.maxPorosity - e.expandedPorosity)});
+        }
+    };
+    std::size_t k = 0;
+    while (k + 1 < run.series.size() && run.series[k].time < 0.75 * e.duration) ++k;
+    zone(k, run.series[k].fluidisedFront - 3 * cellSize, err.wakeCell, err.wakePoint);
+    zone(run.series.size() - 1, run.series.back().sandSurface - 4 * cellSize, err.cellPorosity, err.pointPorosity);
+    std::printf("bed expansion, h = %.4g m: H2 %+.2f %%, plug speed %+.2f %%, front speed %+.2f %% (r2 %.4f), "
+                "expanded bed n: cells within %.4f, points within %.4f of %.4f (behind the front: %.4f, %.4f)\n",
+                cellSize, 100 * err.height, 100 * err.plug, 100 * err.front, err.r2, err.cellPorosity,
+                err.pointPorosity, e.expandedPorosity, err.wakeCell, err.wakePoint);
+    return err;
+}
+
+void expectWithinTolerances(const Errors& e) {
+    EXPECT_LT(std::abs(e.height), 0.02);
+    EXPECT_LT(std::abs(e.plug), 0.05);
+    EXPECT_LT(std::abs(e.front), 0.15);
+    EXPECT_GE(e.r2, 0.98);
+    EXPECT_LT(e.cellPorosity, 0.01);
+    EXPECT_LT(e.pointPorosity, 0.03);
+    EXPECT_LT(e.wakeCell, 0.01);
+    EXPECT_LT(e.wakePoint, 0.03);
+}
+
+}  // namespace
+
+TEST(BedExpansion, CoarseGrid) {
+    const Errors e = runExpansion(0.0124);
+    expectWithinTolerances(e);
+    // guards near what is achieved (docs/verification.md)
+    EXPECT_LT(std::abs(e.height), 0.01);
+    EXPECT_LT(std::abs(e.plug), 0.01);
+    EXPECT_LT(std::abs(e.front), 0.03);
+}
+
+TEST(BedExpansion, ShippedGrid) {
+    const Errors e = runExpansion(0.0062);
+    expectWithinTolerances(e);
+    EXPECT_LT(std::abs(e.height), 0.006);
+    EXPECT_LT(std::abs(e.plug), 0.005);
+    EXPECT_LT(std::abs(e.front), 0.01);
+    EXPECT_LT(e.cellPorosity, 0.004);
+    EXPECT_LT(e.pointPorosity, 0.005);
+}
