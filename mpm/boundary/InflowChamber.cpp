@@ -39,7 +39,7 @@ Index InflowChamber<D>::columnOfNode(const Grid<D>& grid, Index node) const {
 
 template <int D>
 void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
-                              const std::vector<Index>& liquidCellStart, Real density,
+                              const std::vector<Index>& liquidCellStart, Real density, Real gravity,
                               Real fallbackPressure) {
     const int lpc = pointsPerCell_;
     const Real footprint = grid.footprint() / std::pow(Real(lpc), D - 1);
@@ -68,12 +68,14 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
                     liquid.x.push_back(cc[d] * grid.h() + (rest % lpc + 0.5) * spacing);
                     rest /= lpc;
                 }
-                liquid.x.push_back(bottom - 0.5 * height);
+                const Real z = bottom - 0.5 * height;
+                liquid.x.push_back(z);
                 // the new water moves and is pressed like the water just above it
                 for (int d = 0; d < D; ++d) liquid.v.push_back(ref >= 0 ? liquid.v[ref * D + d] : 0.0);
                 liquid.mass.push_back(density * pointVolume_);
                 liquid.volume.push_back(pointVolume_);
-                liquid.pressure.push_back(ref >= 0 ? liquid.pressure[ref] : fallbackPressure);
+                liquid.pressure.push_back(ref >= 0 ? liquid.pressure[ref] + density * gravity * (liquid.x[ref * D + D - 1] - z)
+                                                   : fallbackPressure);
                 liquid.state.push_back(kSubmergedLiquid);
                 injected_ += pointVolume_;
             }

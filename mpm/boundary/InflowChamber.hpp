@@ -10,7 +10,7 @@
 // -3.5 % +- 7.8 % flux in the prototype).
 //
 // Usage, once per step after the points moved:
-//   chamber.inject(grid, liquid, liquidCellStart, density, fallbackPressure);
+//   chamber.inject(grid, liquid, liquidCellStart, density, gravity, fallbackPressure);
 //   chamber.gap(column)  // for the next step's gate traction
 #include <vector>
 
@@ -28,8 +28,10 @@ public:
 
     /// Injects rows of new points wherever the gap reached one point's height. The cell lists
     /// are those of the step's start (the chamber's lowest two cell rows are scanned).
+    /// A new point takes the velocity of the lowest point above it and its pressure plus the
+    /// free water's hydrostatic difference between them.
     void inject(const Grid<D>& grid, LiquidPoints<D>& liquid, const std::vector<Index>& liquidCellStart,
-                Real density, Real fallbackPressure);
+                Real density, Real gravity, Real fallbackPressure);
 
     Real gap(Index column) const { return gaps_[column]; }
     Real gapVolume(const Grid<D>& grid) const;          ///< m3, all columns

@@ -107,7 +107,8 @@ void DoublePointSolver<D>::allocate() {
                     &drag_, &relSpeed_})
         a->assign(nn, 0.0);
     diffusionNode_.assign(nn, 0);
-    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velSOld_, &velLOld_})
+    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velSOld_, &velLOld_,
+                    &pressureGradient_})
         a->assign(nn * D, 0.0);
     solidCellStart_.assign(nc + 1, 0);
     liquidCellStart_.assign(nc + 1, 0);
@@ -122,6 +123,7 @@ void DoublePointSolver<D>::allocate() {
                     &cellPressureIncrement_})
         a->assign(nc, 0.0);
     cellPorosityGrad_.assign(nc * D, 0.0);
+    cellPressureGradient_.assign(nc * D, 0.0);
 
     // Liquid points come and go: reserve for the densest filling the run can reach.
     const std::size_t liquidCapacity = static_cast<std::size_t>(

@@ -156,12 +156,13 @@ private:
     std::vector<char> cellActive_, cellSubmerged_, cellFluidised_, cellStressFree_, cellSandSurface_;
     std::vector<Real> cellDiffusivity_;
     std::vector<Real> cellLiquidVolume_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,
-        cellPorosityGrad_, cellPressureIncrement_;
+        cellPorosityGrad_, cellPressureGradient_, cellPressureIncrement_;
 
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_, velSOld_,
         velLOld_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
     std::vector<char> diffusionNode_;  ///< nodes where the front diffusion acts
+    std::vector<Real> pressureGradient_;  ///< Pa/m, [node][axis]
     BoundaryMasks<D> masks_;
     InflowChamber<D> chamber_;
     std::vector<char> dropFlags_;    ///< scratch of the outflow removal

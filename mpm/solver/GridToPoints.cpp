@@ -3,6 +3,7 @@
 // (physics.md section 2).
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "solver/DoublePointSolver.hpp"
 #include "materials/ConstitutiveModel.hpp"
@@ -91,7 +92,7 @@ void DoublePointSolver<D>::gridToPoints() {
 
     liquid_.strainVol.resize(liquid_.size());
     forAll(static_cast<Index>(liquid_.size()), [&](Index p) {
-        Real dv[D] = {}, vNew[D] = {}, div = 0, gradPhi[D] = {}, sand = 0, mixture = 0;
+        Real dv[D] = {}, vNew[D] = {}, div = 0, gradPhi[D] = {}, sand = 0, mixture = 0, gradP[D] = {};
         bool diffuses = true;
         forStencil<D>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
                       &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
@@ -101,6 +102,7 @@ void DoublePointSolver<D>::gridToPoints() {
                 vNew[d] += N * v;
                 div += v * gradN[d];
                 gradPhi[d] -= gradN[d] * sandPorosity_[i];
+                gradP[d] += N * pressureGradient_[i * D + d];
             }
             sand += N * sandPorosity_[i];
             mixture += N * porosity_[i];
@@ -111,7 +113,12 @@ void DoublePointSolver<D>::gridToPoints() {
             liquid_.v[p * D + d] += dv[d];
             // the liquid's share of the front diffusion: the mixture's volume flux stays
             const Real w = diffuses ? (1 - mixture) / mixture * k * gradPhi[d] : 0;
-            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + dt * (vNew[d] + w), Real(0), extent[d]);
+            const Real moved = dt * (vNew[d] + w);
+            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + moved, Real(0), extent[d]);
+            // pore pressure is a field the liquid moves through, not a property of its points:
+            // a point carries its pressure along the gradient, so that it enters the next cell
+            // with that cell's pressure instead of kicking the cell's mean by a cell's drop
+            liquid_.pressure[p] += gradP[d] * moved;
         }
         liquid_.strainVol[p] = dt * div;
         liquid_.volume[p] *= 1 + dt * div;  // V follows the liquid's own strain

@@ -39,6 +39,24 @@ void DoublePointSolver<D>::computeForces() {
         for (int a = 0; a < D; ++a) cellPorosityGrad_[c * D + a] = grad[a];
     });
 
+    // Each liquid cell's pressure gradient: central between its liquid neighbours, one-sided
+    // where it has one only (the free surface, the chamber's bottom, a wall).
+    forAll(nc, [&](Index c) {
+        const IVec<D> cc = grid_.cellCoords(c);
+        for (int a = 0; a < D; ++a) {
+            Real g = 0;
+            if (cellWeight_[c] > 0) {
+                const Index stride = grid_.cellStride(a);
+                const bool lo = cc[a] > 0 && cellWeight_[c - stride] > 0;
+                const bool hi = cc[a] + 1 < grid_.cells(a) && cellWeight_[c + stride] > 0;
+                if (lo && hi) g = (cellPressure_[c + stride] - cellPressure_[c - stride]) / (2 * grid_.h());
+                else if (hi) g = (cellPressure_[c + stride] - cellPressure_[c]) / grid_.h();
+                else if (lo) g = (cellPressure_[c] - cellPressure_[c - stride]) / grid_.h();
+            }
+            cellPressureGradient_[c * D + a] = g;
+        }
+    });
+
     // Pressure forces gathered per node from its cells:
     //   F_p,L = + p_c V_c [ n_c grad N_i(x_c) + N_i(x_c) grad n_c ]
     //   F_p,S = + p_c V_c [ (1 - n_c) grad N_i(x_c) - N_i(x_c) grad n_c ]
@@ -63,6 +81,16 @@ void DoublePointSolver<D>::computeForces() {
         }
         forceS_[i * D + D - 1] -= massS_[i] * g;
         forceL_[i * D + D - 1] -= massL_[i] * g;
+        // the pore pressure's gradient at the node: the mean of its liquid cells' gradients
+        // (below), which liquid points moving carry their pressure along (GridToPoints.cpp)
+        Real grad[D] = {};
+        int cells = 0;
+        grid_.forEachCellOfNode(i, [&](Index cell, int) {
+            if (cellWeight_[cell] <= 0) return;
+            ++cells;
+            for (int a = 0; a < D; ++a) grad[a] += cellPressureGradient_[cell * D + a];
+        });
+        for (int a = 0; a < D; ++a) pressureGradient_[i * D + a] = cells > 0 ? grad[a] / cells : 0.0;
     });
 
     // Gate: the reservoir's pressure acts on the chamber's liquid at the gate plane, less the

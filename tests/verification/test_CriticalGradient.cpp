@@ -43,3 +43,26 @@ TEST(CriticalGradient, BaseEffectiveStressVanishesAtTheCriticalGradient) {
     std::printf("critical gradient: onset at i = %.4f, closed form %.4f (%+.2f %%)\n", onset, ic,
                 100 * (onset - ic) / ic);
 }
+
+TEST(CriticalGradient, SandTurnsFluidisedOnlyAboveTheCriticalGradient) {
+    // the same slow ramp: the first fluidised sand appears once the base has lost its effective
+    // stress and expanded to n_max, within 3 % of i_c and never below 0.97 i_c
+    const CaseRun run = runVerificationCase("critical_gradient");
+    const auto& sand = run.config.material("sand");
+    const double ic = closed::criticalGradient(sand.grainDensity, run.config.liquid.density, sand.porosity);
+    double onset = -1, highestBefore = 0;
+    for (const auto& s : run.series) {
+        if (s.fluidisedShare > 0) {
+            if (onset < 0) onset = s.gradient;
+        } else {
+            highestBefore = std::max(highestBefore, s.gradient);
+        }
+        if (s.gradient < 0.97 * ic) EXPECT_EQ(s.fluidisedShare, 0.0) << "t = " << s.time << ", i = " << s.gradient;
+    }
+    ASSERT_GT(onset, 0) << "no sand turned fluidised up to i = " << run.series.back().gradient;
+    EXPECT_GE(onset, 0.97 * ic);
+    EXPECT_NEAR(onset, ic, 0.03 * ic);
+    EXPECT_NEAR(onset, ic, 0.01 * ic);  // guard: +0.1 % is achieved
+    std::printf("critical gradient: first fluidised sand at i = %.4f (%+.2f %% of i_c = %.4f)\n", onset,
+                100 * (onset / ic - 1), ic);
+}
