@@ -30,9 +30,12 @@ def main():
     shutil.copytree(a.template, a.out, ignore=shutil.ignore_patterns("polyMesh", "[1-9]*", "0.*"))
     path = a.out + "/system/blockMeshDict"
     text = open(path).read()
+    # outer vertices at the radius whose flat-sided 5-degree wedge has exactly pi r^2 / 72 of
+    # cross-section (0.5 Rv^2 sin(5 deg) = pi r^2 / 72), so that a flux Q maps to Q / (pi d^2 / 4)
     r = a.diameter / 2
+    rv = r * math.sqrt(2 * math.pi / (72 * math.sin(math.radians(5))))
     half = math.radians(2.5)
-    values = {"L": a.length, "yR": r * math.cos(half), "zR": r * math.sin(half), "mzR": -r * math.sin(half)}
+    values = {"L": a.length, "yR": rv * math.cos(half), "zR": rv * math.sin(half), "mzR": -rv * math.sin(half)}
     if a.axial:
         values["nAxial"] = a.axial
     if a.radial:

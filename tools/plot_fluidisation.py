@@ -4,7 +4,10 @@
   fluidisation.png, four panels:
     1. bed height against time (bed_height);
     2. filter velocity against time (gate flux / cross-section, and each monitor's q), with the
-       analytic line when one is given (--analytic-q, m/s; or a column pair read from expected.csv);
+       analytic lines: --analytic-q (m/s) if given; for a pressure gate, the quasi-steady
+       Darcy-Forchheimer filter velocity of the fixed bed for the reservoir's head at each time
+       (through the tube, if any), and for a fluidised bed the tube's share of the head,
+       q = (h - h_tail - i_c H) / (R_t A_s) (the bed takes i_c H whatever the flux);
     3. a space-time image of the solid points' porosity along the column (cell-row means), with
        the fluidised region outlined (rows where most of the solid mass is fluidised);
     4. the fluidised front (fluidised_front) against time, with its linear fit over the window
@@ -68,6 +71,66 @@ def read_space_time(path, cell):
     return np.array(times), rows, columns
 
 
+def tube_resistance(case, case_dir, g, mu, rho):
+    """R_t (s/m2) of the reservoir's tube: lumped keys, or an OpenFOAM wedge pipe's blockMeshDict."""
+    import math
+    import re
+
+    res = case.get("reservoir", {})
+    d, L = res.get("tube_diameter", 0.0), res.get("tube_length", 0.0)
+    if res.get("model") == "openfoam":
+        path = os.path.join(case_dir, res.get("openfoam_case", "reservoir"), "system", "blockMeshDict")
+        try:
+            text = open(path).read()
+            L = float(re.search(r"^L\s+([0-9.eE+-]+);", text, re.M).group(1))
+            y = float(re.search(r"^yR\s+([0-9.eE+-]+);", text, re.M).group(1))
+            rv = y / math.cos(math.radians(2.5))  # the area-true radius of the wedge's vertices
+            d = 2 * rv / math.sqrt(2 * math.pi / (72 * math.sin(math.radians(5))))
+        except (OSError, AttributeError, ValueError):
+            return 0.0
+    if d <= 0 or L <= 0:
+        return 0.0
+    return 128 * mu * L / (math.pi * rho * g * d ** 4)
+
+
+def analytic_lines(case, case_dir, t, head):
+    """Quasi-steady filter velocities for the reservoir head at each time: fixed bed, fluidised bed."""
+    import math
+
+    g = case.get("gravity", 9.81)
+    liquid = case.get("liquid", {})
+    rho, mu = liquid.get("density", 998.2), liquid.get("viscosity", 8.91e-4)
+    grid, column = case["grid"], case["column"]
+    area = grid.get("cross_section_area")
+    if not area or case.get("gate", {}).get("mode", "pressure") != "pressure":
+        return None
+    tail = column.get("overflow_level", column.get("water_level"))
+    Rt = tube_resistance(case, case_dir, g, mu, rho)
+    layers, mats = case["layers"], case["materials"]
+    coeff, icH = [], 0.0
+    for layer in layers:
+        m = mats[layer["material"]]
+        n0, A, B = m["porosity"], m.get("ergun_a", 150.0), m.get("ergun_b", 1.75)
+        perm = m["permeability"]
+        shape = lambda n: min(n, 0.95) ** 3 / (1 - min(n, 0.95)) ** 2
+        if perm["mode"] == "constant":
+            kappa = perm["value"]
+        elif perm["mode"] == "kozeny_carman":
+            kappa = perm["grain_size"] ** 2 * shape(n0) / A
+        else:
+            kappa = perm["value"]
+        F = B / (math.sqrt(A) * n0 ** 1.5) if m.get("ergun", True) else 0.0
+        L = layer["thickness"]
+        coeff.append((L * mu / (kappa * rho * g), L * F / (g * math.sqrt(kappa))))
+        icH += (m.get("grain_density", 2650) / rho - 1) * (1 - n0) * L
+    a = sum(c[0] for c in coeff) + Rt * area
+    b = sum(c[1] for c in coeff)
+    dh = head - tail
+    fixed = np.where(dh > 0, (-a + np.sqrt(a * a + 4 * b * np.maximum(dh, 0))) / (2 * b) if b > 0 else dh / a, 0)
+    fluid = (dh - icH) / (Rt * area) if Rt > 0 else None
+    return fixed, fluid
+
+
 def linear_fit(t, y):
     b, a = np.polyfit(t, y, 1)
     pred = a + b * t
@@ -95,6 +158,7 @@ def main():
     t = s["time"]
 
     cell, area, title = a.cell, a.area, a.title
+    case = None
     case_toml = os.path.join(os.path.dirname(os.path.abspath(a.output)), "case.toml")
     if os.path.isfile(case_toml):
         try:
@@ -129,6 +193,14 @@ def main():
             ax[0, 1].plot(t, s[k], lw=0.8, label=f"q at monitor {k[2:]}")
     if a.analytic_q is not None:
         ax[0, 1].axhline(a.analytic_q, color="k", ls="--", label=f"analytic {a.analytic_q:.4g} m/s")
+    elif case is not None and "reservoir_head" in s:
+        lines = analytic_lines(case, os.path.dirname(case_toml), t, s["reservoir_head"])
+        if lines is not None:
+            fixed, fluid = lines
+            ax[0, 1].plot(t, fixed, "k--", lw=1, label="Darcy-Forchheimer, fixed bed, for the head")
+            if fluid is not None:
+                ok = fluid > fixed
+                ax[0, 1].plot(t[ok], fluid[ok], "k:", lw=1.2, label="fluidised bed: tube takes (h - i_c H)")
     ax[0, 1].set_xlabel("time (s)")
     ax[0, 1].set_ylabel("filter velocity (m/s)")
     ax[0, 1].set_title("filter velocity")
@@ -144,9 +216,12 @@ def main():
             z = (np.arange(rows) + 0.5) * cell
             im = ax[1, 0].pcolormesh(times, 1000 * z, por, shading="nearest", cmap="viridis", vmin=0.35, vmax=0.55)
             fig.colorbar(im, ax=ax[1, 0], label="porosity (row mean of solid points)")
-            ax[1, 0].contour(times, 1000 * z, np.nan_to_num(fl), levels=[0.5], colors="red", linewidths=1.2)
-            ax[1, 0].plot([], [], color="red", label="fluidised region (outline)")
-            ax[1, 0].legend(fontsize=8, loc="lower right")
+            if np.nanmax(fl) > 0.5:
+                ax[1, 0].contour(times, 1000 * z, np.nan_to_num(fl), levels=[0.5], colors="red", linewidths=1.2)
+                ax[1, 0].plot([], [], color="red", label="fluidised region (outline)")
+                ax[1, 0].legend(fontsize=8, loc="lower right")
+            else:
+                ax[1, 0].text(0.5, 0.03, "no sand fluidised", ha="center", transform=ax[1, 0].transAxes)
     else:
         ax[1, 0].text(0.5, 0.5, "no fields.h5", ha="center", transform=ax[1, 0].transAxes)
     ax[1, 0].set_xlabel("time (s)")
@@ -156,8 +231,17 @@ def main():
     # 4 front with fit
     front = s["fluidised_front"]
     ax[1, 1].plot(t, 1000 * front, color="tab:red", label="fluidised front")
+    if np.max(s["fluidised_share"]) == 0:
+        ax[1, 1].text(0.5, 0.5, "no sand fluidised: no front", ha="center", transform=ax[1, 1].transAxes)
+        a.fit_from = a.fit_to = -1.0
     t0 = a.fit_from if a.fit_from is not None else t[0]
     t1 = a.fit_to if a.fit_to is not None else t[-1]
+    if a.fit_from is None and a.fit_to is None and np.max(s["fluidised_share"]) > 0:
+        # by default, while the front climbs: from its first rise to its highest point
+        moving = np.nonzero(s["fluidised_share"] > 0)[0]
+        k0 = moving[0]
+        k1 = k0 + int(np.argmax(front[k0:]))
+        t0, t1 = t[k0], t[max(k0, k1 - 1)]
     sel = (t >= t0) & (t <= t1)
     fit_row = None
     if np.count_nonzero(sel) >= 3:

@@ -83,6 +83,7 @@ void DoublePointSolver<D>::measureStates(ColumnState& s) const {
     Index r = sandBottomRow_;
     if (r >= rows || mass[r] <= 0) return;
     const bool bottomFluid = 2 * fluid[r] > mass[r];
+    if (!bottomFluid && totalFluid == 0) return;  // nothing fluidised: no front, at the filter
     auto share = [&](Index k) {
         if (mass[k] <= 0) return Real(0);
         return bottomFluid ? fluid[k] / mass[k] : 1 - fluid[k] / mass[k];

@@ -66,7 +66,8 @@ struct ColumnState {
     Real bedHeight = 0;           ///< m, sand surface above the filter
     Real fluidisedFront = 0;      ///< m, where the state first changes above the filter: the top
                                   ///<    of a fluidised zone grown from the filter (expansion), or
-                                  ///<    of the resettled bed under a suspension (settling)
+                                  ///<    of the resettled bed under a suspension (settling); the
+                                  ///<    filter level when no sand is fluidised
     Real fluidisedShare = 0;      ///< -, fluidised share of the solid mass
     Real waterSurface = 0;        ///< m, free surface from the liquid mass above the sand
     Real gradient = 0;            ///< -, hydraulic gradient fitted over the interior sand cells

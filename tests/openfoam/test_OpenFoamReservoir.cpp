@@ -123,7 +123,7 @@ TEST(OpenFoamReservoir, FallingHeadThroughTheTube) {
 
 TEST(OpenFoamReservoir, CoupledSteadyStateEqualsLumpedReservoir) {
     QS_REQUIRE_OPENFOAM();
-    const fs::path dir = freshCaseCopy("deltaresColumn", "steady");
+    const fs::path dir = freshCaseCopy("verification/openfoam_utube", "steady");
     CaseConfig c = loadCase(dir.string());
     c.initial.rigidSkeleton = true;  // a steady state quickly: no consolidation
     c.reservoir.area = 1e3;          // the level does not move
@@ -168,7 +168,7 @@ TEST(OpenFoamReservoir, ExplicitAndImplicitAgreeWhereBothAreStable) {
 TEST(OpenFoamReservoir, ImplicitStaysStableWhereExplicitFails) {
     QS_REQUIRE_OPENFOAM();
     // the Deltares U-tube (10 mm, 2 m): added-mass ratio (L_t/A_t)/(h_chamber/A_s) about 6800
-    const fs::path dir = freshCaseCopy("deltaresColumn", "unstable");
+    const fs::path dir = freshCaseCopy("verification/openfoam_utube", "unstable");
     CaseConfig c = loadCase(dir.string());
     c.time.end = 0.1;
     c.time.outputInterval = 0.01;
