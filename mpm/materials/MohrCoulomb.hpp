@@ -27,7 +27,8 @@
 // the two surfaces is reached by this alternation, not by a corner return of its own).
 //
 // State variables: 0 equivalent plastic strain sqrt(2/3 de:de) of the plastic deviator, summed;
-// 1 plastic volumetric strain (zero for psi = 0), summed.
+// 1 plastic volumetric strain, summed: zero for psi = 0 on the plane and the edges; at the apex
+// and the tension cut-off it is the grains losing contact (the main return while a bed lifts).
 #include "materials/ConstitutiveModel.hpp"
 #include "materials/LinearElastic.hpp"
 

@@ -17,8 +17,9 @@
 // the drag-dominated limit, a kinematic one: the points move with
 //   v_S + w_S,  w_S = -D grad(phi) / phi   (solid: a Fickian flux -D grad phi)
 //   v_L + w_L,  w_L = -(1 - n) w_S / n     (liquid: the mixture's volume flux is unchanged)
-// added to their displacement and strain but not to their (FLIP) velocity: momentum, the pressure
-// equation and both phases' mass are untouched.
+// added to their displacement, not to their (FLIP) velocity nor to their strain: momentum, the
+// pressure equation and both phases' mass are untouched. (Points the diffusion moves take their
+// porosity from the grid, which sees the displacement; the liquid points' volume does not.)
 //
 //   D = alpha h c,  c = phi dq/dn at n = n_max  (the kinematic wave speed of the suspension)
 //

@@ -11,8 +11,8 @@
 // mu_s = mu (mu_r - 1), as the deviatoric stress sigma' = 2 mu_s dev(d eps / dt). It is small
 // in 1D (a few hundredths of a Pa s against strain rates of 1e-3 1/s), and it is what resists
 // shear of a fluidised bed in 2D and 3D. The concentration is capped at 0.95 phi_m inside the law,
-// where mu_r = 80: a fluidised point is never denser than n_max, so the cap only guards against
-// a stray grid value.
+// where mu_r = 163 (31 at n_max = 0.41 for the paper's sand): a fluidised point is never much
+// denser than n_max, so the cap only guards against a stray grid value.
 #include <algorithm>
 #include <cmath>
 

@@ -52,6 +52,12 @@ void DoublePointSolver<D>::gridToPoints() {
         Real* s = &solid_.stress[p * 6];
         Real& n = solid_.porosity[p];
         const bool fluidised = cellFluidised_[cell];
+        const bool resettling = !fluidised && solid_.state[p] == kFluidisedState;
+        if (resettling) {
+            // a skeleton again, restarting from zero effective stress (no viscous stress left)
+            solid_.state[p] = kSolidState;
+            for (int k = 0; k < 6; ++k) s[k] = 0;
+        }
         // the sand's porosity where the point is, from the grid (at the sand's top, the cell's)
         if (cellSandSurface_[cell]) gridPorosity = cellSandPorosity_[cell];
         gridPorosity = std::clamp(gridPorosity, Real(1e-3), Real(0.99));
@@ -59,9 +65,9 @@ void DoublePointSolver<D>::gridToPoints() {
         // skeleton that carries stress loses it only beyond the switch's hysteresis band, so that
         // the grid's sampling noise about n_max does not unload a consolidated sediment
         const Real looseLimit = mat.maxPorosity + (isStressFree(s) ? 0 : stateRule_.hysteresis);
-        const bool noSkeleton = gridPorosity > looseLimit;
-        if (fluidised || solid_.state[p] == kFluidisedState || diffuses || noSkeleton) {
-            // fluidised material, material just resettling from it, sand without a skeleton and
+        const bool noSkeleton = !fluidised && gridPorosity > looseLimit;
+        if (fluidised || resettling || diffuses || noSkeleton) {
+            // fluidised material, material resettling from it, sand without a skeleton and
             // stress-free sand that the front diffusion moves take their porosity from the grid,
             // where the points' spacing shows, and a volume to match: their own mass balance
             // drifts once the skeleton carries no stress (physics/LiquidStateRule.hpp)
@@ -74,11 +80,6 @@ void DoublePointSolver<D>::gridToPoints() {
             mat.suspension.stress(n, dEps, dt, s);
             solid_.stressReturn[p] = -1;
             return;
-        }
-        if (solid_.state[p] == kFluidisedState) {
-            // resettled: a skeleton again, restarting from zero effective stress
-            solid_.state[p] = kSolidState;
-            for (int k = 0; k < 6; ++k) s[k] = 0;
         }
         n = 1 - (1 - n) / (1 + dVol);  // solid mass balance, grains incompressible
         solid_.volume[p] *= 1 + dVol;
@@ -115,9 +116,10 @@ void DoublePointSolver<D>::gridToPoints() {
             const Real w = diffuses ? (1 - mixture) / mixture * k * gradPhi[d] : 0;
             const Real moved = dt * (vNew[d] + w);
             liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + moved, Real(0), extent[d]);
-            // pore pressure is a field the liquid moves through, not a property of its points:
-            // a point carries its pressure along the gradient, so that it enters the next cell
-            // with that cell's pressure instead of kicking the cell's mean by a cell's drop
+            // pore pressure is a field the liquid moves through: a point carries its pressure
+            // along the gradient (and takes the cell's change at a fixed place, updatePressure),
+            // so that it enters the next cell with that cell's pressure instead of kicking the
+            // cell's mean by a cell's drop
             liquid_.pressure[p] += gradP[d] * moved;
         }
         liquid_.strainVol[p] = dt * div;
@@ -144,6 +146,10 @@ void DoublePointSolver<D>::updatePressure() {
             for (int a = 0; a < D; ++a)
                 div += grid_.centreGradient(corner, a) * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
         });
+        // the storage equation taken at a fixed place (K_L is a numerical stiffness, so this is
+        // artificial compressibility): the liquid points carry the field along its gradient as
+        // they move (above), so a steady seepage stays steady. Subtracting v_L . grad p here as
+        // well was tried: it biased case B's steady filter velocity by 1.5 % over 60 s
         const Real dp = -(KL / cellPorosity_[c]) * dt * div;
         cellPressureIncrement_[c] = dp;
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {

@@ -44,16 +44,16 @@ void DoublePointSolver<D>::computeForces() {
     forAll(nc, [&](Index c) {
         const IVec<D> cc = grid_.cellCoords(c);
         for (int a = 0; a < D; ++a) {
-            Real g = 0;
+            Real slope = 0;
             if (cellWeight_[c] > 0) {
                 const Index stride = grid_.cellStride(a);
                 const bool lo = cc[a] > 0 && cellWeight_[c - stride] > 0;
                 const bool hi = cc[a] + 1 < grid_.cells(a) && cellWeight_[c + stride] > 0;
-                if (lo && hi) g = (cellPressure_[c + stride] - cellPressure_[c - stride]) / (2 * grid_.h());
-                else if (hi) g = (cellPressure_[c + stride] - cellPressure_[c]) / grid_.h();
-                else if (lo) g = (cellPressure_[c] - cellPressure_[c - stride]) / grid_.h();
+                if (lo && hi) slope = (cellPressure_[c + stride] - cellPressure_[c - stride]) / (2 * grid_.h());
+                else if (hi) slope = (cellPressure_[c + stride] - cellPressure_[c]) / grid_.h();
+                else if (lo) slope = (cellPressure_[c] - cellPressure_[c - stride]) / grid_.h();
             }
-            cellPressureGradient_[c * D + a] = g;
+            cellPressureGradient_[c * D + a] = slope;
         }
     });
 

@@ -109,3 +109,40 @@ TEST(BedExpansion, ShippedGrid) {
     EXPECT_LT(e.cellPorosity, 0.004);
     EXPECT_LT(e.pointPorosity, 0.005);
 }
+
+TEST(BedExpansion, AnExpandedBedAtUniformPorosityStaysUniform) {
+    // the bed of the closed form's end state, started there: a suspension at n2 = 0.452 carried by
+    // its equilibrium flux q(n2) = 1.380e-3 m/s. Nothing may move: every point's porosity within
+    // 0.003 of n2 after 20 s, the bed's height within 0.5 mm, the filter velocity within 0.5 % (a
+    // drag, weight or pressure out of balance would expand or compact it).
+    const auto flux = fluxOf(loadVerificationCase("bed_expansion"));
+    const double n2 = 0.452, q2 = flux.equilibriumFlux(n2);
+    const CaseRun run = runVerificationCase("bed_expansion", [&](CaseConfig& c) {
+        c.materials.front().porosity = n2;
+        c.initial.state = InitialState::Fluidised;
+        c.initial.stress = InitialStress::Zero;
+        c.initial.filterVelocity = q2;
+        c.gate.flux = q2;
+        c.layers.front().thickness = 0.1488;  // 24 cells of 6.2 mm
+        c.time.end = 20.0;
+        c.time.outputInterval = 0.5;
+    });
+    const auto& c = run.config;
+    double cell = 0, point = 0;
+    for (const auto& r : run.profiles.back()) {
+        if (r.solidCount == 0 || r.z > run.series.back().sandSurface - 2 * c.grid.cellSize) continue;
+        EXPECT_EQ(r.fluidisedShare, 1.0) << "z = " << r.z;
+        cell = std::max(cell, std::abs(r.porosity - n2));
+        point = std::max({point, std::abs(r.minPorosity - n2), std::abs(r.maxPorosity - n2)});
+    }
+    EXPECT_LT(cell, 0.002);
+    EXPECT_LT(point, 0.003);
+    EXPECT_LT(point, 1e-3);  // guard: below 1e-4 is achieved
+    const double H = c.sandTop() - c.filterLevel();
+    EXPECT_NEAR(run.series.back().bedHeight, H, 5e-4);
+    EXPECT_NEAR(run.series.back().bedHeight, H, 1e-4);  // guard: 1 um is achieved
+    for (const auto& s : run.series)
+        if (s.time > 1.0) EXPECT_NEAR(s.monitorFlux.at(0), q2, 0.005 * q2) << "t = " << s.time;
+    std::printf("uniform suspension at n = %.3f over 20 s: cells within %.4f, points within %.4f; bed height %+.3f mm\n",
+                n2, cell, point, 1000 * (run.series.back().bedHeight - H));
+}

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 
 #include "core/Error.hpp"
@@ -640,6 +641,27 @@ TEST(CaseLoader, ABedThatStartsFluidisedMayBeLooserThanNmax) {
     EXPECT_EQ(c.initial.stress, InitialStress::Zero);
     const std::string k0 = replaced(fluid, "state = \"fluidised\"", "state = \"fluidised\"\nstress = \"k0\"");
     expectError(k0, "initial.stress", lineOf(k0, "stress = \"k0\""));
+}
+
+}  // namespace
+}  // namespace qs
+
+namespace qs {
+namespace {
+
+TEST(CaseLoader, TheExampleOfTheCaseFormatPageLoads) {
+    // docs/case-format.md's example is what a new user copies: it must stay a valid case
+    std::ifstream in(std::string(QUICKSAND_SOURCE_DIR) + "/docs/case-format.md");
+    ASSERT_TRUE(in) << "docs/case-format.md not found";
+    std::stringstream text;
+    text << in.rdbuf();
+    const std::string doc = text.str();
+    const std::size_t start = doc.find("```toml\n");
+    ASSERT_NE(start, std::string::npos);
+    const std::size_t end = doc.find("```", start + 8);
+    const CaseConfig c = parseCase(doc.substr(start + 8, end - start - 8), "case-format.md");
+    EXPECT_EQ(c.materials.front().model, ConstitutiveModelKind::MohrCoulomb);
+    EXPECT_EQ(c.reservoir.kind, ReservoirKind::Lumped);
 }
 
 }  // namespace
