@@ -3,6 +3,7 @@
 #include "core/Error.hpp"
 #include "physics/ClosedForms.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <iostream>
 
@@ -41,15 +42,16 @@ GateLaw LumpedReservoir::gateLaw(double /*t*/) const {
     return law;
 }
 
-void LumpedReservoir::advance(double /*t*/, double dt, double gateFlux) {
+void LumpedReservoir::advance(double t, double dt, double gateFlux) {
     // Explicit in the flux, but Q is the end-of-step gate flux of an implicit gate update, so
     // the level balance is exact for the volume that actually crossed the gate.
     head_ -= gateFlux * dt / p_.area;
     lastFlux_ = gateFlux;
-    if (!reynoldsWarned_ && tubeReynolds() > kLaminarReynoldsLimit) {
+    meanFlux_ += (std::abs(gateFlux) - meanFlux_) * std::min(1.0, dt / kReynoldsAveraging);
+    if (!reynoldsWarned_ && meanTubeReynolds() > kLaminarReynoldsLimit) {
         reynoldsWarned_ = true;
-        std::cerr << "warning: lumped reservoir: tube Reynolds number " << tubeReynolds()
-                  << " exceeds " << kLaminarReynoldsLimit
+        std::cerr << "warning: lumped reservoir: at t = " << t + dt << " s the tube Reynolds number (mean over "
+                  << kReynoldsAveraging << " s) is " << meanTubeReynolds() << ", above " << kLaminarReynoldsLimit
                   << "; the laminar Hagen-Poiseuille tube loss underestimates the real loss "
                      "(use a wider tube or an OpenFOAM reservoir)\n";
     }
@@ -60,13 +62,19 @@ double LumpedReservoir::tubeReynolds() const {
     return 4.0 * p_.liquidDensity * std::abs(lastFlux_) / (kPi * p_.viscosity * p_.tubeDiameter);
 }
 
-std::vector<double> LumpedReservoir::saveState() const { return {head_, lastFlux_}; }
+double LumpedReservoir::meanTubeReynolds() const {
+    if (p_.tubeDiameter <= 0.0) return 0.0;
+    return 4.0 * p_.liquidDensity * meanFlux_ / (kPi * p_.viscosity * p_.tubeDiameter);
+}
+
+std::vector<double> LumpedReservoir::saveState() const { return {head_, lastFlux_, meanFlux_}; }
 
 void LumpedReservoir::restoreState(const std::vector<double>& state) {
-    QS_CHECK(state.size() == 2, "lumped reservoir: saved state has " << state.size()
-                                                                     << " values, expected 2");
+    QS_CHECK(state.size() == 3, "lumped reservoir: saved state has " << state.size()
+                                                                     << " values, expected 3");
     head_ = state[0];
     lastFlux_ = state[1];
+    meanFlux_ = state[2];
 }
 
 }  // namespace qs

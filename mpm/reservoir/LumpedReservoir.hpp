@@ -7,8 +7,11 @@
 // The gate law hands the solver the slope -dp/dQ so it can treat the tube loss implicitly in the
 // gate node update; lagged, the loss is unstable for realistic tubes. The minor loss is quadratic,
 // so it enters as a secant slope about the last flux, K rho |Q_last| / (2 A_t^2).
-// Hagen-Poiseuille assumes laminar flow: tubeReynolds() reports it and advance() warns once on
-// std::cerr when it exceeds 2000.
+// Hagen-Poiseuille assumes laminar flow: tubeReynolds() reports it, and advance() warns once on
+// std::cerr when its mean over the last half second (meanTubeReynolds) exceeds 2000. The mean,
+// not the step's flux: when the valve opens, the compressible chamber takes in water for a few
+// steps at several times the flow the tube's water column could carry (the lumped tube has no
+// inertia), and that spike says nothing about the tube's flow regime.
 #include "reservoir/ReservoirModel.hpp"
 
 namespace qs {
@@ -28,6 +31,8 @@ class LumpedReservoir final : public ReservoirModel {
 public:
     /// Above this tube Reynolds number the laminar (Hagen-Poiseuille) loss is no longer valid.
     static constexpr double kLaminarReynoldsLimit = 2000.0;
+    /// s, the time over which the Reynolds number of the warning is averaged.
+    static constexpr double kReynoldsAveraging = 0.5;
 
     explicit LumpedReservoir(const LumpedReservoirParameters& parameters);
 
@@ -37,7 +42,7 @@ public:
     /// the minor-loss slope and the Reynolds check.
     void advance(double t, double dt, double gateFlux) override;
     double head() const override { return head_; }
-    /// {h, Q_last}
+    /// {h, Q_last, mean |Q|}
     std::vector<double> saveState() const override;
     void restoreState(const std::vector<double>& state) override;
 
@@ -45,6 +50,8 @@ public:
     double tubeResistance() const { return tubeResistance_; }
     /// Re = 4 rho |Q_last| / (pi mu d) of the flow in the tube; 0 without a tube.
     double tubeReynolds() const;
+    /// Re of the mean |Q| over about kReynoldsAveraging (an exponential mean); what warns.
+    double meanTubeReynolds() const;
     /// True once advance() has warned that the tube flow left the laminar range.
     bool reynoldsWarningIssued() const { return reynoldsWarned_; }
 
@@ -54,6 +61,7 @@ private:
     double tubeResistance_ = 0.0;  ///< s/m2
     double head_ = 0.0;            ///< m
     double lastFlux_ = 0.0;        ///< m3/s, the gate flux of the last advanced step
+    double meanFlux_ = 0.0;        ///< m3/s, exponential mean of |Q| over kReynoldsAveraging
     bool reynoldsWarned_ = false;  ///< not part of the saved state: warn once per run
 };
 

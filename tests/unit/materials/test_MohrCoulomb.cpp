@@ -273,3 +273,43 @@ TEST(ConstitutiveModels, MadeFromTheCaseByName) {
     EXPECT_EQ(makeConstitutiveModel(m)->name(), "linear_elastic");
     EXPECT_NEAR(makeConstitutiveModel(m)->oedometricModulus(), 1.3462e6, 1e2);
 }
+
+TEST(MohrCoulomb, NonAssociatedReturnsWithATensionCutOffStayAdmissibleAndNeverCompact) {
+    // psi = 10 deg, c = 200 Pa, sigma_t = 50 Pa: random trial stresses across every region (plane,
+    // both edges, apex, the Rankine planes and their corners). After each return: f <= 0 for
+    // every ordering, sigma_1 <= sigma_t, f = 0 or sigma_1 = sigma_t when the trial was outside,
+    // and the plastic volume never shrinks (psi >= 0 and the Rankine flow both dilate), so no
+    // multiplier came out negative
+    MohrCoulomb mc(E, nu, 30, 10, 200, 50);
+    unsigned seed = 2024;
+    auto uniform = [&]() { seed = seed * 1664525u + 1013904223u; return Real(seed) / 4294967296.0; };
+    int regions[5] = {0, 0, 0, 0, 0};
+    for (int trial = 0; trial < 4000; ++trial) {
+        Real s[6], state[2] = {0, 0};
+        for (int k = 0; k < 3; ++k) s[k] = -1500 + 1800 * uniform();
+        for (int k = 3; k < 6; ++k) s[k] = -300 + 600 * uniform();
+        const Real zero[6] = {0, 0, 0, 0, 0, 0};
+        Eigen::Matrix3d m;
+        m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
+        const Real largest0 = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m).eigenvalues()(2);
+        const bool outside = maxYield(mc, s) > 0 || largest0 > 50;
+        const StressReturn r = apply(mc, s, zero, state);
+        ++regions[static_cast<int>(r)];
+        m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
+        const Real largest = Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d>(m).eigenvalues()(2);
+        const Real tol = 1e-9 * (std::abs(s[0]) + std::abs(s[1]) + std::abs(s[2]) + 1500);
+        const Real f = maxYield(mc, s);
+        EXPECT_LE(f, tol) << "trial " << trial;
+        EXPECT_LE(largest, 50 + tol) << "trial " << trial;
+        if (outside) {
+            EXPECT_LT(std::min(-f, 50 - largest), tol) << "trial " << trial << ": on one surface";
+        } else {
+            EXPECT_EQ(r, StressReturn::Elastic);
+        }
+        EXPECT_GE(state[1], -1e-15) << "trial " << trial << ": plastic compaction";
+        EXPECT_GE(state[0], 0.0);
+    }
+    EXPECT_GT(regions[static_cast<int>(StressReturn::Plane)], 0);
+    EXPECT_GT(regions[static_cast<int>(StressReturn::Edge)], 0);
+    EXPECT_GT(regions[static_cast<int>(StressReturn::TensionCutoff)], 0);
+}

@@ -120,24 +120,38 @@ TEST(LumpedReservoir, SaveRestoreRoundTrip) {
 
 TEST(LumpedReservoir, WarnsOnceWhenTheTubeFlowIsNoLongerLaminar) {
     LumpedReservoir reservoir(tubeReservoir());
-    const double d = 8e-3;
+    const double d = 8e-3, dt = 1e-3;
     // Q at Re = 1000 and Re = 3000: Q = Re pi mu d / (4 rho).
     const double laminarQ = 1000.0 * kPi * kMu * d / (4.0 * kRho);
     const double turbulentQ = 3.0 * laminarQ;
 
     testing::internal::CaptureStderr();
-    reservoir.advance(0.0, 1e-3, laminarQ);
+    double t = 0;
+    for (; t < 5.0; t += dt) reservoir.advance(t, dt, laminarQ);  // ten averaging times
     EXPECT_NEAR(reservoir.tubeReynolds(), 1000.0, 1e-9);
+    EXPECT_NEAR(reservoir.meanTubeReynolds(), 1000.0, 1.0);
+    // a spike of a few steps (the valve opening onto a compressible chamber) is not a regime
+    for (int k = 0; k < 5; ++k, t += dt) reservoir.advance(t, dt, 10 * turbulentQ);
+    EXPECT_NEAR(reservoir.tubeReynolds(), 30000.0, 1e-6);
     EXPECT_FALSE(reservoir.reynoldsWarningIssued());
     EXPECT_EQ(testing::internal::GetCapturedStderr(), "");
 
+    // a sustained turbulent flow is, backflow included: the mean relaxes from m0 towards 3000
+    // and passes 2000 after 0.5 ln((3000 - m0) / 1000) s
+    const double m0 = reservoir.meanTubeReynolds();
+    const double expectedWarning = LumpedReservoir::kReynoldsAveraging * std::log((3000.0 - m0) / 1000.0);
     testing::internal::CaptureStderr();
-    reservoir.advance(1e-3, 1e-3, -turbulentQ);  // backflow counts too
-    reservoir.advance(2e-3, 1e-3, turbulentQ);
+    double warnedAt = -1;
+    for (int k = 0; k < 5000; ++k, t += dt) {
+        reservoir.advance(t, dt, k < 500 ? -turbulentQ : turbulentQ);
+        if (warnedAt < 0 && reservoir.reynoldsWarningIssued()) warnedAt = k * dt;
+    }
     const std::string err = testing::internal::GetCapturedStderr();
-    EXPECT_NEAR(reservoir.tubeReynolds(), 3000.0, 1e-9);
+    EXPECT_NEAR(reservoir.meanTubeReynolds(), 3000.0, 1.0);
     EXPECT_TRUE(reservoir.reynoldsWarningIssued());
+    EXPECT_NEAR(warnedAt, expectedWarning, 0.005);
     EXPECT_NE(err.find("Reynolds"), std::string::npos) << err;
+    EXPECT_NE(err.find("at t = "), std::string::npos) << err;
     EXPECT_EQ(err.find("Reynolds"), err.rfind("Reynolds")) << "warned more than once: " << err;
 }
 
