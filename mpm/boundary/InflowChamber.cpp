@@ -24,17 +24,26 @@ Real InflowChamber<D>::gapVolume(const Grid<D>& grid) const {
 }
 
 template <int D>
-Index InflowChamber<D>::columnOfNode(const Grid<D>& grid, Index node) const {
-    if (D == 1) return 0;
-    // the column of the cell whose lower-left corner is the node (the last column for the
-    // nodes on the far walls): one neighbouring column per node, enough for the gap's weight
+Real InflowChamber<D>::gapAtNode(const Grid<D>& grid, Index node) const {
+    if (D == 1) return gaps_[0];
     const IVec<D> n = grid.nodeCoords(node);
-    Index col = 0, stride = 1;
-    for (int d = 0; d < D - 1; ++d) {
-        col += std::min<Index>(n[d], grid.cells(d) - 1) * stride;
-        stride *= grid.cells(d);
+    Real sum = 0;
+    int count = 0;
+    // the columns whose lower corner along each horizontal axis is n[d] - 1 or n[d]
+    for (int corner = 0; corner < (1 << (D - 1)); ++corner) {
+        Index col = 0, stride = 1;
+        bool inside = true;
+        for (int d = 0; d < D - 1; ++d) {
+            const Index c = n[d] - 1 + ((corner >> d) & 1);
+            if (c < 0 || c >= grid.cells(d)) inside = false;
+            col += c * stride;
+            stride *= grid.cells(d);
+        }
+        if (!inside) continue;
+        sum += gaps_[col];
+        ++count;
     }
-    return col;
+    return sum / count;
 }
 
 template <int D>

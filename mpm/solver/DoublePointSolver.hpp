@@ -143,6 +143,7 @@ private:
     void measureStates(ColumnState& s) const;
     bool liquidFilled(Index node) const;
     Real gateVelocityNow() const;
+    void uniformGateVelocity(Real tubeLoss);
 
     const CaseConfig& config_;
     ReservoirModel& reservoir_;

@@ -97,7 +97,7 @@ void DoublePointSolver<D>::computeForces() {
     // weight of the empty gap below the lowest liquid point (physics.md, gate).
     if (config_.gate.mode == GateMode::Pressure) {
         for (Index i : masks_.gateNodes) {
-            const Real p = gateLaw_.staticPressure - rhoL * g * chamber_.gap(chamber_.columnOfNode(grid_, i));
+            const Real p = gateLaw_.staticPressure - rhoL * g * chamber_.gapAtNode(grid_, i);
             forceL_[i * D + D - 1] += p * nodeFootprint(grid_, i);
         }
     }
@@ -128,6 +128,9 @@ void DoublePointSolver<D>::solveNodes() {
     for (Index i : masks_.gateNodes) area += nodeFootprint(grid_, i);
     const Real gateResistance = config_.gate.mode == GateMode::Pressure ? gateLaw_.resistance : 0.0;
     const Index rowStride = grid_.nodeStride(D - 1);
+    // In 2D and 3D a pressure gate moves its water in at one velocity across the gate plane
+    // (uniformGateVelocity, below); in 1D the gate is one node and the two are the same
+    const bool uniformGate = D > 1 && config_.gate.mode == GateMode::Pressure;
 
     forAll(grid_.numNodes(), [&](Index i) {
         const Real mS = massS_[i], mL = massL_[i], Q = drag_[i];
@@ -148,7 +151,8 @@ void DoublePointSolver<D>::solveNodes() {
             const Real vS1 = mS > 0 ? vS0 + dt * fS / mS : 0.0;  // drag-free predictors
             const Real vL1 = mL > 0 ? vL0 + dt * fL / mL : 0.0;
             const bool vertical = d == D - 1;
-            const Real cd = vertical ? c : 0.0;
+            // a uniform gate takes its tube loss on the whole gate plane, below
+            const Real cd = vertical && !uniformGate ? c : 0.0;
             const Real vLfix = (isGate && vertical) ? vGate : 0.0;
             Real vS = 0, vL = 0;
             if (mS > 0 && mL > 0) {
@@ -184,6 +188,8 @@ void DoublePointSolver<D>::solveNodes() {
         relSpeed_[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
     });
 
+    if (uniformGate) uniformGateVelocity(gateResistance * area * area);
+
     // Gate flux through the gate plane (free water: q = v_L).
     Real Qg = 0;
     for (Index i : masks_.gateNodes)
@@ -191,11 +197,34 @@ void DoublePointSolver<D>::solveNodes() {
     gateFlux_ = Qg;
 }
 
+// The gate plane is where the tube's water enters the chamber, with water on both sides. Held
+// only by a uniform pressure, node by node, the chamber's water would sit on the gate like water
+// in an upturned glass: a free surface with the heavy fluid on top, Rayleigh-Taylor unstable.
+// A lateral mode grew from round-off at 20 /s in a 2D case B at rest and broke it after 2.3 s
+// of flow. The gate therefore moves all its nodes' water at one vertical velocity: the total
+// momentum of the gate row, with the reservoir's pressure (computeForces) and the tube loss
+// R Q A taken implicitly on the whole flux, Q = v A (exact now, where per node it was not).
+// The chamber redistributes the water sideways, as the real one under its filter does.
+template <int D>
+void DoublePointSolver<D>::uniformGateVelocity(Real tubeLoss) {
+    Real momentum = 0, mass = 0;
+    for (Index i : masks_.gateNodes) {
+        momentum += massL_[i] * velL_[i * D + D - 1];  // the drag-free predictor (no solid here)
+        mass += massL_[i];
+    }
+    const Real v = mass > 0 ? momentum / (mass + dt_ * tubeLoss) : 0.0;
+    for (Index i : masks_.gateNodes)
+        if (massL_[i] > 0) velL_[i * D + D - 1] = v;
+}
+
 template void DoublePointSolver<1>::computeForces();
 template void DoublePointSolver<1>::solveNodes();
+template void DoublePointSolver<1>::uniformGateVelocity(Real);
 template void DoublePointSolver<2>::computeForces();
 template void DoublePointSolver<2>::solveNodes();
+template void DoublePointSolver<2>::uniformGateVelocity(Real);
 template void DoublePointSolver<3>::computeForces();
 template void DoublePointSolver<3>::solveNodes();
+template void DoublePointSolver<3>::uniformGateVelocity(Real);
 
 }  // namespace qs
