@@ -70,9 +70,33 @@ struct MaterialConfig {
     double ergunB = 1.75;              ///< -, Ergun B
 };
 
+/// A horizontal range [from, to] (m) on one horizontal axis; the whole width when absent.
+struct HorizontalRange {
+    double from = 0.0, to = 0.0;
+    bool contains(double x) const { return x >= from && x < to; }
+};
+
+/// A part of a layer, side by side with the rest of it, made of another material: the layer's
+/// points whose horizontal position lies within x (and y in 3D) take it (2D and 3D only).
+struct ZoneConfig {
+    std::string material;              ///< a key of [materials]
+    HorizontalRange x;                 ///< m
+    std::optional<HorizontalRange> y;  ///< m (3D); the whole width when absent
+    bool contains(const double* position, int dimension) const {
+        return x.contains(position[0]) && (dimension < 3 || !y || y->contains(position[1]));
+    }
+};
+
 struct LayerConfig {
     std::string material;              ///< a key of [materials]
     double thickness = 0.0;            ///< m
+    std::vector<ZoneConfig> zones;     ///< [[layers.zones]]: other materials side by side
+    /// The material at a horizontal position (the last zone that holds it, else the layer's).
+    const std::string& materialAt(const double* position, int dimension) const {
+        for (std::size_t k = zones.size(); k-- > 0;)
+            if (zones[k].contains(position, dimension)) return zones[k].material;
+        return material;
+    }
 };
 
 struct LiquidConfig {
@@ -146,6 +170,8 @@ struct TimeConfig {
 struct MonitorConfig {
     std::string name;
     double elevation = 0.0;            ///< m, section where the filter velocity is measured
+    std::optional<HorizontalRange> x;  ///< m, part of the section (2D, 3D); whole width if absent
+    std::optional<HorizontalRange> y;  ///< m, (3D)
 };
 
 struct OutputConfig {

@@ -37,7 +37,8 @@ constexpr const char* kMaterialKeys[] = {
     "tensile_strength", "k0",          "ergun",          "ergun_a",         "ergun_b",
     "permeability"};
 constexpr const char* kPermeabilityKeys[] = {"mode", "value", "grain_size"};
-constexpr const char* kLayerKeys[] = {"material", "thickness"};
+constexpr const char* kLayerKeys[] = {"material", "thickness", "zones"};
+constexpr const char* kZoneKeys[] = {"material", "x", "y"};
 constexpr const char* kLiquidKeys[] = {"density",
                                        "bulk_modulus",
                                        "viscosity",
@@ -57,7 +58,7 @@ constexpr const char* kCouplingKeys[] = {"scheme", "window", "tolerance", "max_i
                                          "relaxation"};
 constexpr const char* kTimeKeys[] = {
     "end", "courant", "dt", "output_interval", "checkpoint_interval"};
-constexpr const char* kMonitorKeys[] = {"name", "elevation"};
+constexpr const char* kMonitorKeys[] = {"name", "elevation", "x", "y"};
 constexpr const char* kOutputKeys[] = {"directory", "fields", "progress_interval"};
 
 /// The accepted keys of one table; `title` is how messages name the table.
@@ -81,6 +82,7 @@ const TableKeys kColumn = tableKeys("[column]", kColumnKeys);
 const TableKeys kMaterial = tableKeys("[materials.NAME]", kMaterialKeys);
 const TableKeys kPermeability = tableKeys("[materials.NAME.permeability]", kPermeabilityKeys);
 const TableKeys kLayer = tableKeys("[[layers]]", kLayerKeys);
+const TableKeys kZone = tableKeys("[[layers.zones]]", kZoneKeys);
 const TableKeys kLiquid = tableKeys("[liquid]", kLiquidKeys);
 const TableKeys kPoints = tableKeys("[points]", kPointsKeys);
 const TableKeys kInitial = tableKeys("[initial]", kInitialKeys);
@@ -315,6 +317,29 @@ public:
         if (!has(key))
             missing(key, "a number " + range.describe() + (hint.empty() ? "" : ", " + hint));
         return *optionalNumber(key, range, hint);
+    }
+
+    /// A horizontal range written `key = [from, to]` (m), within [0, width], from < to.
+    std::optional<HorizontalRange> optionalRange(std::string_view key, double width,
+                                                 const std::string& hint) const {
+        const toml::node* node = find(key);
+        if (!node) return std::nullopt;
+        auto value = [](const toml::node* n, double& v) {
+            if (!n) return false;
+            if (const auto* i = n->as_integer()) { v = static_cast<double>(i->get()); return true; }
+            if (const auto* f = n->as_floating_point()) { v = f->get(); return true; }
+            return false;
+        };
+        HorizontalRange r;
+        const toml::array* a = node->as_array();
+        if (!a || a->size() != 2 || !value(a->get(0), r.from) || !value(a->get(1), r.to))
+            fail(key, "expected two numbers [from, to] in m (" + hint + "), got " + describe(*node));
+        const double tol = 1e-12 * width;
+        if (!std::isfinite(r.from) || !std::isfinite(r.to) || r.from < -tol || r.to > width + tol ||
+            !(r.from < r.to))
+            fail(key, "range [" + number(r.from) + ", " + number(r.to) + "] m is out of range: expected 0 <= from < to <= " +
+                          number(width) + " m, the grid's width (" + hint + ")");
+        return r;
     }
 
     int integer(std::string_view key, int fallback, const Range& range) const {
@@ -724,7 +749,35 @@ private:
             }
             layer.thickness = s.requiredNumber("thickness", positive("m"));
             requireWholeCells(s, "thickness", layer.thickness, c_.grid.cellSize);
+            readZones(s, names, layer);
             c_.layers.push_back(layer);
+        }
+    }
+
+    /// [[layers.zones]]: parts of a layer made of another material, side by side with it.
+    void readZones(const Section& layer, const std::vector<std::string>& names, LayerConfig& out) {
+        const toml::array* zones = layer.arrayOfTables("zones", false);
+        if (!zones) return;
+        if (c_.grid.dimension == 1)
+            layer.fail("zones", "zones place materials side by side, which needs grid.dimension = 2 or 3 "
+                                "(a 1D column has one material per layer)");
+        for (std::size_t i = 0; i < zones->size(); ++i) {
+            const Section s(file_, zones->get(i)->as_table(), layer.path() + ".zones[" + std::to_string(i) + "]",
+                            kZone, layer.lineOf("zones"));
+            ZoneConfig z;
+            z.material = s.requiredString("material", "the NAME of a [materials.NAME] table");
+            if (std::find(names.begin(), names.end(), z.material) == names.end()) {
+                std::string what = "no material named " + inQuotes(z.material) + " in [materials]; defined: " +
+                                   joinQuoted(names);
+                if (auto guess = nearest(z.material, names)) what += ". Did you mean " + inQuotes(*guess) + "?";
+                s.fail("material", what);
+            }
+            const std::string hint = "the zone's horizontal extent";
+            if (!s.has("x")) s.missing("x", "[from, to] in m, " + hint);
+            z.x = *s.optionalRange("x", c_.grid.width, hint);
+            if (c_.grid.dimension == 3) z.y = s.optionalRange("y", c_.grid.width, hint + " along y");
+            else s.forbid("y", "y applies only in 3D (grid.dimension = 3)");
+            out.zones.push_back(z);
         }
     }
 
@@ -937,6 +990,15 @@ private:
             m.elevation =
                 s.requiredNumber("elevation", between(0, false, c_.column.top, false, "m"),
                                  "within the grid, from the gate (0) to column.top");
+            const std::string part = "the part of the section to average over";
+            if (c_.grid.dimension == 1) {
+                s.forbid("x", "a 1D section has no horizontal extent");
+                s.forbid("y", "a 1D section has no horizontal extent");
+            } else {
+                m.x = s.optionalRange("x", c_.grid.width, part);
+                if (c_.grid.dimension == 3) m.y = s.optionalRange("y", c_.grid.width, part + " along y");
+                else s.forbid("y", "y applies only in 3D (grid.dimension = 3)");
+            }
             c_.monitors.push_back(m);
             lines.push_back(s.line());
         }

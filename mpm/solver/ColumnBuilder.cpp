@@ -96,65 +96,86 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
         return mu * q0 / kappa + law.ergunFactor(m.porosity) * rhoL * q0 * std::abs(q0) / std::sqrt(kappa);
     };
     const std::size_t nl = config.layers.size();
-    std::vector<Real> layerBottom(nl), overburden(nl, 0.0), seepageAbove(nl, 0.0);
+    std::vector<Real> layerBottom(nl);
     Real z = config.filterLevel();
     for (std::size_t k = 0; k < nl; ++k) { layerBottom[k] = z; z += config.layers[k].thickness; }
-    for (std::size_t k = nl; k-- > 0;) {
-        if (k + 1 < nl) {
-            const auto& m = config.material(config.layers[k + 1].material);
-            const Real L = config.layers[k + 1].thickness;
-            overburden[k] = overburden[k + 1] + (1 - m.porosity) * (m.grainDensity - rhoL) * g * L;
-            seepageAbove[k] = seepageAbove[k + 1] + seepageGradient(m) * L;
+    auto materialIndex = [&](const std::string& name) {
+        for (std::size_t j = 0; j < materials.size(); ++j)
+            if (materials[j].name == name) return static_cast<int>(j);
+        return 0;
+    };
+    // What rests on layer k at a horizontal position: the buoyant weight of the layers above and
+    // the head an initial seepage loses in them, each layer's material taken where the point is
+    // (zones side by side are columns of their own)
+    struct Above { Real overburden = 0, seepage = 0; };
+    auto above = [&](std::size_t k, const Real* x) {
+        Above a;
+        for (std::size_t j = k + 1; j < nl; ++j) {
+            const auto& m = config.material(config.layers[j].materialAt(x, D));
+            const Real L = config.layers[j].thickness;
+            a.overburden += (1 - m.porosity) * (m.grainDensity - rhoL) * g * L;
+            a.seepage += seepageGradient(m) * L;
         }
-    }
+        return a;
+    };
     const bool fluidised = config.initial.state == InitialState::Fluidised;
     Real chamberExcess = 0;  // excess pore pressure at the filter, shared by the chamber water
 
     for (std::size_t k = 0; k < nl; ++k) {
         const auto& layer = config.layers[k];
-        const auto& mc = config.material(layer.material);
-        int matIndex = 0;
-        for (std::size_t j = 0; j < materials.size(); ++j)
-            if (materials[j].name == layer.material) matIndex = static_cast<int>(j);
-        const Real n0 = mc.porosity;
-        const Real gammaBuoyant = (1 - n0) * (mc.grainDensity - rhoL) * g;
-        const Real seepage = seepageGradient(mc);
         const Real zb = layerBottom[k], zt = zb + layer.thickness;
         const Index cells = cellsIn(layer.thickness, h);
-        const Real Eoed = materials[matIndex].model->oedometricModulus();
-        const Real lateralRatio = mc.poissonRatio / (1 - mc.poissonRatio);
-        // Undrained start under a surcharge q: the water takes u0 = q m_v / (m_v + n/K_L).
-        Real u0 = 0;
-        if (config.initial.undrainedSurcharge) {
-            const Real mv = 1 / Eoed;
-            u0 = config.loads.surcharge * mv / (mv + n0 / config.liquid.bulkModulus);
-        }
-        // Excess pore pressure over hydrostatic: the seepage's head loss from the sand top, or in
-        // a bed that starts fluidised (a suspension, no effective stress) its whole buoyant weight.
-        auto buoyantWeight = [&](Real z) { return overburden[k] + gammaBuoyant * (zt - z); };
-        auto excess = [&](Real z) {
-            return fluidised ? buoyantWeight(z) : seepageAbove[k] + seepage * (zt - z);
+        // Excess pore pressure over hydrostatic at height zp: the seepage's head loss from the
+        // sand top, or in a bed that starts fluidised (a suspension, no effective stress) its
+        // whole buoyant weight.
+        struct Local { const MaterialConfig* mc; int index; Real buoyant, excess; };
+        auto local = [&](const Vec<D>& x) {
+            const std::string& name = layer.materialAt(&x[0], D);
+            const MaterialConfig& mc = config.material(name);
+            const Above a = above(k, &x[0]);
+            const Real zp = x[D - 1];
+            const Real buoyant = a.overburden + (1 - mc.porosity) * (mc.grainDensity - rhoL) * g * (zt - zp);
+            const Real excess = fluidised ? buoyant : a.seepage + seepageGradient(mc) * (zt - zp);
+            return Local{&mc, materialIndex(name), buoyant, excess};
         };
-        if (k == 0) chamberExcess = excess(zb);
+        if (k == 0) {
+            Vec<D> base{};
+            base[D - 1] = zb;
+            chamberExcess = local(base).excess;  // the material at x = 0 sets the chamber's
+        }
         forEachLatticePoint(grid, spc, zb, zt, cells * spc, [&](const Vec<D>& x, Real V) {
+            const Local at = local(x);
+            const MaterialConfig& mc = *at.mc;
             Real stress[6] = {0, 0, 0, 0, 0, 0};
             if (config.initial.stress == InitialStress::K0) {
-                const Real sv = -std::max(Real(0), buoyantWeight(x[D - 1]) - excess(x[D - 1]));
+                const Real sv = -std::max(Real(0), at.buoyant - at.excess);
                 stress[2] = sv;
                 stress[0] = stress[1] = mc.k0 * sv;
             }
             if (config.initial.undrainedSurcharge) {
+                // the water takes u0 = q m_v / (m_v + n/K_L) of the surcharge q
+                const Real Eoed = materials[at.index].model->oedometricModulus();
+                const Real mv = 1 / Eoed;
+                const Real u0 = config.loads.surcharge * mv / (mv + mc.porosity / config.liquid.bulkModulus);
+                const Real lateralRatio = mc.poissonRatio / (1 - mc.poissonRatio);
                 const Real dsv = -(config.loads.surcharge - u0);
                 stress[2] += dsv;
                 stress[0] += lateralRatio * dsv;
                 stress[1] += lateralRatio * dsv;
             }
-            appendSolid(solid, x, V, n0, mc.grainDensity, matIndex, stress,
+            appendSolid(solid, x, V, mc.porosity, mc.grainDensity, at.index, stress,
                         fluidised ? kFluidisedState : kSolidState);
         });
         forEachLatticePoint(grid, lpc, zb, zt, cells * lpc, [&](const Vec<D>& x, Real V) {
-            appendLiquid(liquid, x, V, n0 * rhoL * V, hydrostatic(x[D - 1]) + u0 + excess(x[D - 1]),
-                         q0 / n0);
+            const Local at = local(x);
+            const MaterialConfig& mc = *at.mc;
+            Real u0 = 0;
+            if (config.initial.undrainedSurcharge) {
+                const Real mv = 1 / materials[at.index].model->oedometricModulus();
+                u0 = config.loads.surcharge * mv / (mv + mc.porosity / config.liquid.bulkModulus);
+            }
+            appendLiquid(liquid, x, V, mc.porosity * rhoL * V, hydrostatic(x[D - 1]) + u0 + at.excess,
+                         q0 / mc.porosity);
         });
     }
 

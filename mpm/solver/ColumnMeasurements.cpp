@@ -11,6 +11,23 @@
 namespace qs {
 
 template <int D>
+Real DoublePointSolver<D>::footprintShare(Index node, const std::optional<HorizontalRange>& x,
+                                          const std::optional<HorizontalRange>& y) const {
+    Real share = 1;
+    const IVec<D> n = grid_.nodeCoords(node);
+    const Real h = grid_.h();
+    for (int d = 0; d < D - 1; ++d) {
+        const auto& range = d == 0 ? x : y;
+        if (!range) continue;
+        const Real centre = n[d] * h, extent = grid_.cells(d) * h;
+        const Real lo = std::max(Real(0), centre - h / 2), hi = std::min(extent, centre + h / 2);
+        const Real inside = std::min(hi, Real(range->to)) - std::max(lo, Real(range->from));
+        share *= std::max(Real(0), inside) / (hi - lo);
+    }
+    return share;
+}
+
+template <int D>
 ColumnState DoublePointSolver<D>::columnState() const {
     ColumnState s;
     s.time = time_;
@@ -21,12 +38,16 @@ ColumnState DoublePointSolver<D>::columnState() const {
     s.bedHeight = s.sandSurface - config_.filterLevel();
     s.waterSurface = waterSurface();
     measureStates(s);
-    for (Index row : monitorNodes_) {
-        // q = n (v_L - v_S) on the grid, averaged over the section's nodes by footprint
+    for (std::size_t m = 0; m < monitorNodes_.size(); ++m) {
+        const Index row = monitorNodes_[m];
+        const MonitorConfig& monitor = config_.monitors[m];
+        // q = n (v_L - v_S) on the grid, averaged over the section's nodes by footprint (the
+        // part of each node's footprint inside the monitor's x and y ranges, if it has them)
         Real q = 0, a = 0;
         for (Index i = 0; i < grid_.numNodes(); ++i) {
             if (grid_.nodeCoords(i)[D - 1] != row || massL_[i] <= 0) continue;
-            const Real w = nodeFootprint(grid_, i);
+            const Real w = nodeFootprint(grid_, i) * footprintShare(i, monitor.x, monitor.y);
+            if (w <= 0) continue;
             q += w * porosity_[i] * (velL_[i * D + D - 1] - velS_[i * D + D - 1]);
             a += w;
         }

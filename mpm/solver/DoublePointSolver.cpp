@@ -122,7 +122,6 @@ void DoublePointSolver<D>::allocate() {
     for (auto* a : {&cellLiquidVolume_, &cellPressure_, &cellWeight_, &cellPorosity_, &cellSandPorosity_,
                     &cellPressureIncrement_})
         a->assign(nc, 0.0);
-    cellPorosityGrad_.assign(nc * D, 0.0);
     cellPressureGradient_.assign(nc * D, 0.0);
 
     // Liquid points come and go: reserve for the densest filling the run can reach.

@@ -141,6 +141,9 @@ private:
     Real sandSurface() const;
     Real surchargeNow() const;
     void measureStates(ColumnState& s) const;
+    /// The share of a node's footprint inside horizontal ranges (1 without them).
+    Real footprintShare(Index node, const std::optional<HorizontalRange>& x,
+                        const std::optional<HorizontalRange>& y) const;
     bool liquidFilled(Index node) const;
     Real gateVelocityNow() const;
     void uniformGateVelocity(Real tubeLoss);
@@ -158,7 +161,7 @@ private:
     std::vector<char> cellActive_, cellSubmerged_, cellFluidised_, cellStressFree_, cellSandSurface_;
     std::vector<Real> cellDiffusivity_;
     std::vector<Real> cellLiquidVolume_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,
-        cellPorosityGrad_, cellPressureGradient_, cellPressureIncrement_;
+        cellPressureGradient_, cellPressureIncrement_;
 
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_, velSOld_,

@@ -552,6 +552,47 @@ TEST(CaseLoader, TwoDimensionalGridNeedsAWholeWidth) {
     EXPECT_EQ(parseCase(ok, kFile).grid.dimension, 2);
 }
 
+TEST(CaseLoader, ZonesPlaceMaterialsSideBySideIn2DOnly) {
+    const std::string twoD = replaced(kMinimal, "[grid]\n", "[grid]\ndimension = 2\nwidth = 0.08\n") +
+                             "";
+    const std::string coarse = "[materials.coarse]\nporosity = 0.4\n[materials.coarse.permeability]\n"
+                               "mode = \"constant\"\nvalue = 1e-9\n\n";
+    auto withZone = [&](const std::string& base, const std::string& zone) {
+        return replaced(base, "[[layers]]\nmaterial = \"sand\"\nthickness = 0.1\n",
+                        coarse + "[[layers]]\nmaterial = \"sand\"\nthickness = 0.1\n\n[[layers.zones]]\n" + zone);
+    };
+    const std::string ok = withZone(twoD, "material = \"coarse\"\nx = [0.04, 0.08]\n");
+    const CaseConfig c = parseCase(ok, kFile);
+    ASSERT_EQ(c.layers.at(0).zones.size(), 1u);
+    const double left[2] = {0.01, 0.05}, right[2] = {0.05, 0.05};
+    EXPECT_EQ(c.layers[0].materialAt(left, 2), "sand");
+    EXPECT_EQ(c.layers[0].materialAt(right, 2), "coarse");
+    // a 1D column has one material per layer
+    const std::string oneD = withZone(kMinimal, "material = \"coarse\"\nx = [0.0, 0.01]\n");
+    EXPECT_TRUE(contains(expectError(oneD, "layers[0].zones", lineOf(oneD, "[[layers.zones]]")), "dimension"));
+    // out of the grid, reversed, not two numbers, unknown material, y in 2D
+    const std::string wide = withZone(twoD, "material = \"coarse\"\nx = [0.04, 0.09]\n");
+    EXPECT_TRUE(contains(expectError(wide, "layers[0].zones[0].x", lineOf(wide, "x = [")), "0.08"));
+    const std::string reversed = withZone(twoD, "material = \"coarse\"\nx = [0.06, 0.04]\n");
+    expectError(reversed, "layers[0].zones[0].x", lineOf(reversed, "x = ["));
+    const std::string single = withZone(twoD, "material = \"coarse\"\nx = 0.04\n");
+    expectError(single, "layers[0].zones[0].x", lineOf(single, "x = 0.04"));
+    const std::string typo = withZone(twoD, "material = \"corse\"\nx = [0.04, 0.08]\n");
+    EXPECT_TRUE(contains(expectError(typo, "layers[0].zones[0].material", lineOf(typo, "\"corse\"")), "coarse"));
+    const std::string y = withZone(twoD, "material = \"coarse\"\nx = [0.04, 0.08]\ny = [0.0, 0.04]\n");
+    expectError(y, "layers[0].zones[0].y", lineOf(y, "y = ["));
+}
+
+TEST(CaseLoader, MonitorsTakeAPartOfTheSectionIn2DAnd3D) {
+    const std::string twoD = replaced(kMinimal, "[grid]\n", "[grid]\ndimension = 2\nwidth = 0.08\n");
+    const std::string ok = twoD + "[[monitors]]\nname = \"left\"\nelevation = 0.05\nx = [0.0, 0.04]\n";
+    const CaseConfig c = parseCase(ok, kFile);
+    ASSERT_TRUE(c.monitors.at(0).x.has_value());
+    EXPECT_EQ(c.monitors[0].x->to, 0.04);
+    const std::string oneD = kMinimal + "[[monitors]]\nname = \"left\"\nelevation = 0.05\nx = [0.0, 0.04]\n";
+    expectError(oneD, "monitors[0].x", lineOf(oneD, "x = ["));
+}
+
 class CaseDirectoryTest : public ::testing::Test {
 protected:
     void SetUp() override {
