@@ -9,41 +9,66 @@ namespace qs {
 
 template <int D>
 void InflowChamber<D>::setup(const Grid<D>& grid, Real pointVolume, int pointsPerCell) {
-    Index columns = 1;
-    for (int d = 0; d < D - 1; ++d) columns *= grid.cells(d);
-    gaps_.assign(columns, 0.0);
-    pointVolume_ = pointVolume;
     pointsPerCell_ = pointsPerCell;
+    Index slots = 1;
+    for (int d = 0; d < D - 1; ++d) slots *= grid.cells(d) * pointsPerCell;
+    gaps_.assign(slots, 0.0);
+    pointVolume_ = pointVolume;
+    scan_.assign(slots, Scan{});
+}
+
+template <int D>
+Real InflowChamber<D>::slotFootprint(const Grid<D>& grid) const {
+    return grid.footprint() / std::pow(Real(pointsPerCell_), D - 1);
 }
 
 template <int D>
 Real InflowChamber<D>::gapVolume(const Grid<D>& grid) const {
     Real v = 0;
     for (Real g : gaps_) v += g;
-    return v * grid.footprint();
+    return v * slotFootprint(grid);
+}
+
+template <int D>
+Index InflowChamber<D>::slotOf(const Grid<D>& grid, const Real* x) const {
+    const Real spacing = grid.h() / pointsPerCell_;
+    Index slot = 0, stride = 1;
+    for (int d = 0; d < D - 1; ++d) {
+        const Index n = grid.cells(d) * pointsPerCell_;
+        const Index k = std::clamp<Index>(static_cast<Index>(std::floor(x[d] / spacing)), 0, n - 1);
+        slot += k * stride;
+        stride *= n;
+    }
+    return slot;
 }
 
 template <int D>
 Real InflowChamber<D>::gapAtNode(const Grid<D>& grid, Index node) const {
     if (D == 1) return gaps_[0];
+    // the slots whose centres lie in the node's footprint (half a cell either side, inside the
+    // grid): the gap the node's water sees, in equal shares
     const IVec<D> n = grid.nodeCoords(node);
-    Real sum = 0;
-    int count = 0;
-    // the columns whose lower corner along each horizontal axis is n[d] - 1 or n[d]
-    for (int corner = 0; corner < (1 << (D - 1)); ++corner) {
-        Index col = 0, stride = 1;
-        bool inside = true;
-        for (int d = 0; d < D - 1; ++d) {
-            const Index c = n[d] - 1 + ((corner >> d) & 1);
-            if (c < 0 || c >= grid.cells(d)) inside = false;
-            col += c * stride;
-            stride *= grid.cells(d);
-        }
-        if (!inside) continue;
-        sum += gaps_[col];
-        ++count;
+    const int lpc = pointsPerCell_;
+    Index lo[D], hi[D], count[D];
+    for (int d = 0; d < D - 1; ++d) {
+        const Index slots = grid.cells(d) * lpc;
+        lo[d] = std::max<Index>(0, n[d] * lpc - lpc / 2);
+        hi[d] = std::min<Index>(slots, n[d] * lpc + (lpc + 1) / 2);
+        count[d] = hi[d] - lo[d];
     }
-    return sum / count;
+    Index total = 1;
+    for (int d = 0; d < D - 1; ++d) total *= count[d];
+    Real sum = 0;
+    for (Index k = 0; k < total; ++k) {
+        Index rest = k, slot = 0, stride = 1;
+        for (int d = 0; d < D - 1; ++d) {
+            slot += (lo[d] + rest % count[d]) * stride;
+            rest /= count[d];
+            stride *= grid.cells(d) * lpc;
+        }
+        sum += gaps_[slot];
+    }
+    return sum / total;
 }
 
 template <int D>
@@ -51,47 +76,51 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
                               const std::vector<Index>& liquidCellStart, Real density, Real gravity,
                               Real fallbackPressure) {
     const int lpc = pointsPerCell_;
-    const Real footprint = grid.footprint() / std::pow(Real(lpc), D - 1);
+    const Real footprint = slotFootprint(grid);
     const Real height = pointVolume_ / footprint;
     const Real spacing = grid.h() / lpc;
-    const int rowPoints = static_cast<int>(std::pow(lpc, D - 1));
-    for (Index col = 0; col < static_cast<Index>(gaps_.size()); ++col) {
-        // the lowest liquid point of the column, in its two lowest cell rows
-        Index ref = -1;
-        Real bottom = grid.top();
-        for (Index row = 0; row < 2; ++row) {
-            const Index c = col + row * grid.cellStride(D - 1);
-            for (Index p = liquidCellStart[c]; p < liquidCellStart[c + 1]; ++p) {
-                const Real z = liquid.x[p * D + D - 1];
-                bottom = std::min(bottom, z - 0.5 * liquid.volume[p] / footprint);
-                if (ref < 0 || z < liquid.x[ref * D + D - 1]) ref = p;
-            }
+    const Index slots = static_cast<Index>(gaps_.size());
+    // the lowest liquid point of every slot, from the chamber's two lowest cell rows
+    for (auto& s : scan_) s = Scan{};
+    Index columns = 1;
+    for (int d = 0; d < D - 1; ++d) columns *= grid.cells(d);
+    for (Index c = 0; c < 2 * columns && c < grid.numCells(); ++c) {
+        for (Index p = liquidCellStart[c]; p < liquidCellStart[c + 1]; ++p) {
+            Scan& s = scan_[slotOf(grid, &liquid.x[p * D])];
+            const Real z = liquid.x[p * D + D - 1];
+            s.bottom = std::min(s.bottom, z - 0.5 * liquid.volume[p] / footprint);
+            if (s.ref < 0 || z < liquid.x[s.ref * D + D - 1]) s.ref = p;
         }
-        const IVec<D> cc = grid.cellCoords(col);
-        QS_CHECK(ref >= 0, "the chamber's column " << col << " has no liquid in its two lowest cell rows: the "
-                           "water left the chamber faster than one cell per step (reduce time.courant)");
+    }
+    for (Index slot = 0; slot < slots; ++slot) {
+        const Scan& s = scan_[slot];
+        QS_CHECK(s.ref >= 0, "the chamber's injection slot " << slot << " has no liquid in its two lowest cell rows: "
+                             "the water left the chamber faster than one cell per step (reduce time.courant)");
+        Real centre[D > 1 ? D - 1 : 1] = {};
+        Index rest = slot;
+        for (int d = 0; d < D - 1; ++d) {
+            const Index n = grid.cells(d) * lpc;
+            centre[d] = (rest % n + 0.5) * spacing;
+            rest /= n;
+        }
+        Real bottom = std::min(s.bottom, grid.top());
+        const Index ref = s.ref;
         while (bottom >= height) {
-            for (int k = 0; k < rowPoints; ++k) {
-                int rest = k;
-                for (int d = 0; d < D - 1; ++d) {
-                    liquid.x.push_back(cc[d] * grid.h() + (rest % lpc + 0.5) * spacing);
-                    rest /= lpc;
-                }
-                const Real z = bottom - 0.5 * height;
-                liquid.x.push_back(z);
-                // the new water moves and is pressed like the water just above it
-                for (int d = 0; d < D; ++d) liquid.v.push_back(ref >= 0 ? liquid.v[ref * D + d] : 0.0);
-                liquid.mass.push_back(density * pointVolume_);
-                liquid.volume.push_back(pointVolume_);
-                liquid.pressure.push_back(ref >= 0 ? liquid.pressure[ref] + density * gravity * (liquid.x[ref * D + D - 1] - z)
-                                                   : fallbackPressure);
-                liquid.state.push_back(kSubmergedLiquid);
-                injected_ += pointVolume_;
-            }
+            for (int d = 0; d < D - 1; ++d) liquid.x.push_back(centre[d]);
+            const Real z = bottom - 0.5 * height;
+            liquid.x.push_back(z);
+            // the new water moves and is pressed like the water just above it
+            for (int d = 0; d < D; ++d) liquid.v.push_back(liquid.v[ref * D + d]);
+            liquid.mass.push_back(density * pointVolume_);
+            liquid.volume.push_back(pointVolume_);
+            liquid.pressure.push_back(liquid.pressure[ref] + density * gravity * (liquid.x[ref * D + D - 1] - z));
+            liquid.state.push_back(kSubmergedLiquid);
+            injected_ += pointVolume_;
             bottom -= height;
         }
-        gaps_[col] = std::max(Real(0), bottom);
+        gaps_[slot] = std::max(Real(0), bottom);
     }
+    (void)fallbackPressure;
 }
 
 template class InflowChamber<1>;

@@ -4,14 +4,18 @@
 //
 // The liquid points of the chamber move up as water enters, leaving an empty gap above the gate
 // plane. The gate traction is reduced by the weight of that gap (rho_L g gap), and when the gap
-// of a column of cells reaches the height of one new point, a row of new points is injected
-// there. New points are small, V = V_cell / ceil(liquid_per_cell / n_min) per point along the
-// vertical, so that they do not leave sand cells empty when they get there (larger ones gave
-// -3.5 % +- 7.8 % flux in the prototype).
+// of an injection slot reaches the height of one new point, a new point is injected there. The
+// slots are the horizontal lattice of the liquid points (liquid_per_cell per cell and axis), so
+// that water rising faster under one part of the column than under another is refilled where it
+// left: a slot per column of cells, refilled a row at a time from its lowest point, left voids
+// under the faster part and closed the liquid ledger of two gravels side by side only to 1.5e-3.
+// New points are small, V = V_cell / ceil(liquid_per_cell / n_min) per point along the vertical,
+// so that they do not leave sand cells empty when they get there (larger ones gave -3.5 % +- 7.8 %
+// flux in the prototype).
 //
 // Usage, once per step after the points moved:
 //   chamber.inject(grid, liquid, liquidCellStart, density, gravity, fallbackPressure);
-//   chamber.gap(column)  // for the next step's gate traction
+//   chamber.gapAtNode(grid, node)  // for the next step's gate traction
 #include <vector>
 
 #include "grid/Grid.hpp"
@@ -26,28 +30,34 @@ public:
     /// horizontal axis (the horizontal lattice of an injected row).
     void setup(const Grid<D>& grid, Real pointVolume, int pointsPerCell);
 
-    /// Injects rows of new points wherever the gap reached one point's height. The cell lists
+    /// Injects new points in every slot whose gap reached one point's height. The cell lists
     /// are those of the step's start (the chamber's lowest two cell rows are scanned).
     /// A new point takes the velocity of the lowest point above it and its pressure plus the
     /// free water's hydrostatic difference between them.
     void inject(const Grid<D>& grid, LiquidPoints<D>& liquid, const std::vector<Index>& liquidCellStart,
                 Real density, Real gravity, Real fallbackPressure);
 
-    Real gap(Index column) const { return gaps_[column]; }
-    Real gapVolume(const Grid<D>& grid) const;          ///< m3, all columns
+    Real gapVolume(const Grid<D>& grid) const;          ///< m3, all slots
     Real injectedVolume() const { return injected_; }    ///< m3 since the start
     Real pointVolume() const { return pointVolume_; }
-    /// m, the gap under a gate node: the mean over the columns of cells that share the node (a
-    /// node on a wall has half as many). Taking one neighbouring column instead shifts the
-    /// gap's weight half a cell sideways, and that one-sided coupling made a lateral pressure
-    /// mode in the chamber grow from round-off (x 700 per half second in a 2D case B).
+    /// m, the gap under a gate node: the mean over the slots whose centres lie in the node's
+    /// footprint (half a cell either side). Taking one neighbouring column instead shifted the
+    /// gap's weight half a cell sideways.
     Real gapAtNode(const Grid<D>& grid, Index node) const;
 
-    std::vector<Real>& gaps() { return gaps_; }         ///< for checkpoints
+    std::vector<Real>& gaps() { return gaps_; }         ///< for checkpoints (one per slot)
     void setInjectedVolume(Real v) { injected_ = v; }
 
 private:
-    std::vector<Real> gaps_;   ///< m, per column of cells
+    struct Scan {
+        Real bottom = 1e300;   ///< m, the lowest point's lower edge
+        Index ref = -1;        ///< the lowest point
+    };
+    Index slotOf(const Grid<D>& grid, const Real* x) const;
+    Real slotFootprint(const Grid<D>& grid) const;
+
+    std::vector<Real> gaps_;   ///< m, per injection slot
+    std::vector<Scan> scan_;   ///< per slot, scratch of inject() (no allocation per step)
     Real pointVolume_ = 0;
     int pointsPerCell_ = 1;
     Real injected_ = 0;

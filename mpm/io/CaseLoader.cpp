@@ -863,6 +863,18 @@ private:
                    "loads.surcharge is " +
                        number(c_.loads.surcharge) +
                        " Pa; set loads.surcharge > 0 or remove this key");
+        // Zones side by side start from a state built column by column: right at rest under
+        // hydrostatic water, not yet for the starts that need one flux per zone from a shared
+        // chamber and top (a seepage or fluidised start) or one undrained response
+        bool zones = false;
+        for (const LayerConfig& l : c_.layers) zones = zones || !l.zones.empty();
+        if (zones) {
+            const std::string why = "the layers have [[layers.zones]], whose initial state is built only at rest "
+                                    "so far (a start that needs one flux or undrained response per zone is not)";
+            if (i.filterVelocity != 0.0) s.fail("filter_velocity", "filter_velocity must be 0 here: " + why);
+            if (i.undrainedSurcharge) s.fail("undrained_surcharge", "undrained_surcharge must be false here: " + why);
+            if (i.state == InitialState::Fluidised) s.fail("state", "state must be \"solid\" here: " + why);
+        }
         i.gravityStageDuration = s.optionalNumber("gravity_stage_duration", 0.0, nonNegative("s"));
         i.gravityStageDamping =
             s.optionalNumber("gravity_stage_damping", 0.05, between(0, false, 1, true));

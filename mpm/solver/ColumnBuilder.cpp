@@ -182,7 +182,7 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
     // Free water: the chamber below the filter and the water above the sand. In an undrained
     // start the closed chamber shares the sand's excess pressure (it drains only upwards).
     if (config.initial.undrainedSurcharge) {
-        const auto& m = config.material(config.layers.front().material);
+        const auto& m = config.material(config.layers.front().material);  // no zones (CaseLoader)
         const Real mv = 1 / closed::oedometricModulus(m.youngsModulus, m.poissonRatio);
         chamberExcess += config.loads.surcharge * mv / (mv + m.porosity / config.liquid.bulkModulus);
     }

@@ -146,7 +146,7 @@ private:
                         const std::optional<HorizontalRange>& y) const;
     bool liquidFilled(Index node) const;
     Real gateVelocityNow() const;
-    void uniformGateVelocity(Real tubeLoss);
+    void uniformGateVelocity(Real resistance);
 
     const CaseConfig& config_;
     ReservoirModel& reservoir_;

@@ -186,7 +186,7 @@ void DoublePointSolver<D>::solveNodes() {
         relSpeed_[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
     });
 
-    if (uniformGate) uniformGateVelocity(gateResistance * area * area);
+    if (uniformGate) uniformGateVelocity(gateResistance);
 
     // Gate flux through the gate plane (free water: q = v_L).
     Real Qg = 0;
@@ -201,16 +201,20 @@ void DoublePointSolver<D>::solveNodes() {
 // A lateral mode grew from round-off at 20 /s in a 2D case B at rest and broke it after 2.3 s
 // of flow. The gate therefore moves all its nodes' water at one vertical velocity: the total
 // momentum of the gate row, with the reservoir's pressure (computeForces) and the tube loss
-// R Q A taken implicitly on the whole flux, Q = v A (exact now, where per node it was not).
+// R Q A_wet taken implicitly on the whole flux, Q = v A_wet (exact now, where per node it was
+// not; a gate node without water, which injection keeps rare, carries neither).
 // The chamber redistributes the water sideways, as the real one under its filter does.
 template <int D>
-void DoublePointSolver<D>::uniformGateVelocity(Real tubeLoss) {
-    Real momentum = 0, mass = 0;
+void DoublePointSolver<D>::uniformGateVelocity(Real resistance) {
+    // the wet part of the gate carries the flux, Q = v A_wet, and the tube loss R Q on it
+    Real momentum = 0, mass = 0, wet = 0;
     for (Index i : masks_.gateNodes) {
+        if (massL_[i] <= 0) continue;
         momentum += massL_[i] * velL_[i * D + D - 1];  // the drag-free predictor (no solid here)
         mass += massL_[i];
+        wet += nodeFootprint(grid_, i);
     }
-    const Real v = mass > 0 ? momentum / (mass + dt_ * tubeLoss) : 0.0;
+    const Real v = mass > 0 ? momentum / (mass + dt_ * resistance * wet * wet) : 0.0;
     for (Index i : masks_.gateNodes)
         if (massL_[i] > 0) velL_[i * D + D - 1] = v;
 }

@@ -74,7 +74,11 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     const auto& rs = data.doubles("rel_speed");
     QS_CHECK(rs.size() == relSpeed_.size(), "the checkpoint's grid differs from the case's grid");
     relSpeed_ = rs;
-    chamber_.gaps() = data.doubles("gap");
+    const auto& gaps = data.doubles("gap");
+    QS_CHECK(gaps.size() == chamber_.gaps().size(),
+             "the checkpoint's chamber has " << gaps.size() << " injection slots, the case's " << chamber_.gaps().size()
+                                             << ": written by another version of quicksand or for another grid");
+    chamber_.gaps() = gaps;
     reservoir_.restoreState(data.doubles("reservoir"));
     const auto& l = data.doubles("ledger");
     cumulativeInflow_ = l.at(0);

@@ -50,15 +50,17 @@ TEST(SideBySide, TwoGravelsAtRestStayAtRest) {
         worst = std::max(worst, std::abs(s.gateFlux / run.config.grid.crossSectionArea));
     }
     EXPECT_LT(worst, 1e-3 * K);  // the geostatic test's bound
-    EXPECT_LT(worst, 1e-12);     // guard: round-off is achieved (1e-17 m/s)
+    EXPECT_LT(worst, 1e-10);     // guard: 5e-9 K (4e-17 m/s is achieved)
     std::printf("two gravels at rest: largest spurious filter velocity %.2e m/s (K of the fine half %.3e m/s)\n", worst,
                 K);
 }
 
 TEST(PressureGate, A2DColumnAtRestGrowsNoLateralMode) {
-    // the paper's case B in 2D, 8 cells wide, at rest on a constant head: the two gate nodes'
-    // velocities must stay equal to round-off (the Rayleigh-Taylor mode of a gate held node by
-    // node grew from 1e-17 to 2.6e-12 m/s in 1.65 s here)
+    // the paper's case B in 2D, 8 cells wide, at rest on a constant head, seeded by round-off:
+    // the liquid's vertical velocity one cell above the gate must stay the same at the wall and
+    // in the middle. The gate's own row moves as one by construction, so it is not what is
+    // watched. Held node by node, the Rayleigh-Taylor mode grew here at about 20 /s: from 1e-17
+    // to 1.4e-13 m/s by 1.65 s one cell above the gate; with the uniform gate it stays at 6e-17.
     const CaseRun run = runVerificationCase("steady_seepage_B", [](CaseConfig& c) {
         c.grid.dimension = 2;
         c.grid.width = 0.072;
@@ -66,11 +68,13 @@ TEST(PressureGate, A2DColumnAtRestGrowsNoLateralMode) {
         c.reservoir.head = c.column.waterLevel;
         c.time.end = 2.0;
         c.time.outputInterval = 0.1;
-        c.monitors = {nodeMonitor("wall", 0.0, 0.0, 1e-3), nodeMonitor("middle", 0.0, 0.036, 1e-3)};
+        const double h = c.grid.cellSize;
+        c.monitors = {nodeMonitor("wall", h, 0.0, 1e-3), nodeMonitor("middle", h, 0.036, 1e-3)};
     });
     double worst = 0;
     for (const auto& s : run.series) worst = std::max(worst, std::abs(s.monitorFlux.at(0) - s.monitorFlux.at(1)));
     EXPECT_LT(worst, 1e-14);
-    std::printf("2D column at rest on a pressure gate: largest lateral difference of the gate velocity %.1e m/s\n",
+    std::printf("2D column at rest on a pressure gate: largest lateral difference of the filter velocity one cell above "
+                "the gate %.1e m/s\n",
                 worst);
 }

@@ -581,6 +581,9 @@ TEST(CaseLoader, ZonesPlaceMaterialsSideBySideIn2DOnly) {
     EXPECT_TRUE(contains(expectError(typo, "layers[0].zones[0].material", lineOf(typo, "\"corse\"")), "coarse"));
     const std::string y = withZone(twoD, "material = \"coarse\"\nx = [0.04, 0.08]\ny = [0.0, 0.04]\n");
     expectError(y, "layers[0].zones[0].y", lineOf(y, "y = ["));
+    // a start that needs one flux per zone is not built yet: refused, not silently wrong
+    const std::string seepage = ok + "[initial]\nfilter_velocity = 1e-3\n";
+    EXPECT_TRUE(contains(expectError(seepage, "initial.filter_velocity", lineOf(seepage, "filter_velocity")), "zones"));
 }
 
 TEST(CaseLoader, MonitorsTakeAPartOfTheSectionIn2DAnd3D) {
