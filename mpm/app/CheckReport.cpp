@@ -82,11 +82,17 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         const double Eoed = closed::oedometricModulus(m.youngsModulus, m.poissonRatio);
         const auto waves = closed::zeroDragWaveSpeeds(Eoed, KL, n, m.grainDensity, rho);
         cMax = std::max(cMax, waves.fast);
-        const double K = closed::hydraulicConductivity(kappa, rho, g, mu);
+        // K = kappa rho g / mu needs gravity; without it, quote K at standard gravity
+        const bool weightless = !(g > 0);
+        const double K = closed::hydraulicConductivity(kappa, rho, weightless ? 9.81 : g, mu);
         out << "material '" << m.name << "' (n0 = " << n << ", n_max = " << m.maxPorosity << ")\n";
         out << "  critical gradient i_c = (Gs-1)(1-n0)     " << closed::criticalGradient(m.grainDensity, rho, n) << "\n";
         out << "  permeability kappa(n0)                   " << kappa << " m2\n";
-        out << "  hydraulic conductivity K                 " << K << " m/s\n";
+        out << "  hydraulic conductivity K                 " << K << " m/s"
+            << (weightless ? " (at g = 9.81 m/s2: this case has gravity = 0, where K is not defined; kappa and "
+                             "mu set the flow)"
+                           : "")
+            << "\n";
         if (m.permeability.grainSize > 0)
             out << "  Kozeny-Carman kappa from grain size      "
                 << closed::kozenyCarman(m.permeability.grainSize, n, m.ergunA) << " m2\n";
@@ -99,6 +105,7 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         out << "  consolidation coefficient c_v            "
             << (kappa / mu) / (1 / Eoed + n / KL) << " m2/s\n";
     }
+    requireStableTimeStep(config);  // what run refuses before its first step, check refuses too
     const double dtStable = config.time.courant * h / cMax;
     out << "time step: c_fast = " << cMax << " m/s, dt = courant h / c_fast = " << dtStable << " s ("
         << std::llround(config.time.end / (config.time.dt ? *config.time.dt : dtStable))

@@ -172,6 +172,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     const bool windowed = options.windowedModel || config.reservoir.kind == ReservoirKind::OpenFoam;
 
     // Validate everything that can be validated before touching an earlier output directory.
+    requireStableTimeStep(config);
     requireFitsMachine(config, estimateRunSize(config), machineMemory());
     std::unique_ptr<ReservoirModel> builtIn;
     if (!windowed) builtIn = makeReservoirModel(config);

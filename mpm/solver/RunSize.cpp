@@ -128,6 +128,18 @@ MachineMemory machineMemory() {
     return m;
 }
 
+void requireStableTimeStep(const CaseConfig& config) {
+    if (!config.time.dt) return;
+    const double c = fastestWaveSpeed(config), stable = 0.5 * config.grid.cellSize / c;
+    if (*config.time.dt <= stable) return;
+    std::ostringstream s;
+    s << config.caseDirectory << "/case.toml: key 'time.dt': " << *config.time.dt
+      << " s exceeds the stable step 0.5 h / c_fast = " << stable << " s (c_fast = " << c
+      << " m/s, h = " << config.grid.cellSize << " m): set time.dt <= " << stable
+      << " s, or remove it so that the step follows time.courant";
+    throw Error(s.str());
+}
+
 void requireFitsMachine(const CaseConfig& config, const RunSize& r, const MachineMemory& machine) {
     if (machine.total <= 0 || r.peakBytes <= machine.total) return;
     std::ostringstream s;

@@ -58,6 +58,26 @@ if(NOT kept STREQUAL "earlier results\n")
   message(FATAL_ERROR "a refused run touched the earlier output/")
 endif()
 
+# 4b. a time step beyond the stable one: check refuses it as run does
+file(MAKE_DIRECTORY "${WORK_DIR}/fastdt")
+string(REPLACE "[time]" "[time]\ndt = 1.0e-3" fastdt "${good}")
+file(WRITE "${WORK_DIR}/fastdt/case.toml" "${fastdt}")
+foreach(cmd check run)
+  execute_process(COMMAND "${QUICKSAND}" ${cmd} "${WORK_DIR}/fastdt" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  if(rc EQUAL 0 OR NOT err MATCHES "case.toml: key 'time.dt': 0.001 s exceeds the stable step")
+    message(FATAL_ERROR "quicksand ${cmd} did not refuse a time step beyond the stable one (${rc}):\n${out}\n${err}")
+  endif()
+endforeach()
+
+# 4c. without gravity the conductivity is quoted at standard gravity, saying so
+file(MAKE_DIRECTORY "${WORK_DIR}/weightless")
+string(REGEX REPLACE "gravity = [0-9.]+" "gravity = 0" weightless "${good}")
+file(WRITE "${WORK_DIR}/weightless/case.toml" "${weightless}")
+execute_process(COMMAND "${QUICKSAND}" check "${WORK_DIR}/weightless" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT out MATCHES "hydraulic conductivity K +[0-9.]*[1-9][0-9.e-]* m/s \\(at g = 9.81 m/s2")
+  message(FATAL_ERROR "check with gravity = 0 does not quote K at standard gravity (${rc}):\n${out}\n${err}")
+endif()
+
 # 5. case.toml that is a directory
 file(MAKE_DIRECTORY "${WORK_DIR}/dircase/case.toml")
 execute_process(COMMAND "${QUICKSAND}" check "${WORK_DIR}/dircase" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
