@@ -12,6 +12,7 @@
 #include "core/Error.hpp"
 #include "FoamAvailability.hpp"
 #include "io/CaseLoader.hpp"
+#include "solver/Interruption.hpp"
 #include "solver/Run.hpp"
 
 namespace {
@@ -50,6 +51,9 @@ int main(int argc, char** argv) {
             return 0;
         }
         return usage();
+    } catch (const qs::Interrupted& e) {
+        std::cerr << "quicksand: " << e.what() << "\n";
+        return e.exitCode();
     } catch (const qs::Error& e) {
         std::cerr << "quicksand: error: " << e.what() << "\n";
         return 1;

@@ -1,7 +1,9 @@
 #include "solver/Run.hpp"
+#include "solver/Interruption.hpp"
 
 #include <chrono>
 #include <cmath>
+#include <sstream>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -233,8 +235,11 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     }
 
     const double interval = config.time.outputInterval;
-    // outputs stay on the grid k * interval, also after a resume
-    double nextOutput = options.resume ? (std::floor(solver.time() / interval + 0.5) + 1) * interval : 0.0;
+    // outputs stay on the grid k * interval, also after a resume: the first one after the
+    // checkpoint's time (an interruption checkpoints between outputs, not only on one)
+    const double halfStep = 0.5 * solver.dt();
+    double nextOutput =
+        options.resume ? (std::floor((solver.time() + halfStep) / interval) + 1) * interval : 0.0;
     double nextCheckpoint = config.time.checkpointInterval > 0
                                 ? solver.time() + config.time.checkpointInterval
                                 : 1e300;
@@ -265,7 +270,20 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
                     D, solver.dt(), solver.waveSpeed(), solver.solid().size(),
                     solver.liquid().size(), solver.time(), end,
                     windowed ? (", coupled to " + model->name()).c_str() : "");
+    // Ctrl-C or SIGTERM: the step (or coupling window) in progress ends, a checkpoint is
+    // written, and the run stops saying how to resume (solver/Interruption.hpp)
+    InterruptionGuard interruption;
     while (solver.time() < end - half) {
+        if (const int sig = interruptionRequested()) {
+            checkpoint();
+            std::ostringstream m;
+            m << "interrupted by " << signalName(sig) << " at t = " << solver.time() << " s (step "
+              << solver.stepCount() << ")";
+            if (options.writeFiles)
+                m << "; checkpoint written to " << checkpointPath.string() << "; continue with: quicksand run "
+                  << config.caseDirectory << " --resume";
+            throw Interrupted(sig, m.str());
+        }
         const long before = solver.stepCount();
         advancer->advance(end);
         pointSteps += double(solver.stepCount() - before) * double(solver.solid().size() + solver.liquid().size());

@@ -4,7 +4,9 @@
 #  3. a failed run leaves an earlier output/ untouched;
 #  4. `check` sizes a run (cells, points, steps, memory, wall time) and refuses, as `run` does,
 #     a case whose memory does not fit the machine;
-#  5. a case.toml that is a directory is named as such.
+#  5. a case.toml that is a directory is named as such;
+#  and: check refuses what run refuses before its first step (a time step beyond the stable one),
+#  gravity = 0 quotes K at standard gravity, Ctrl-C checkpoints and exits with 130.
 file(GLOB_RECURSE cases "${SOURCE_DIR}/cases/*/case.toml")
 foreach(c IN LISTS cases)
   get_filename_component(dir "${c}" DIRECTORY)
@@ -76,6 +78,22 @@ file(WRITE "${WORK_DIR}/weightless/case.toml" "${weightless}")
 execute_process(COMMAND "${QUICKSAND}" check "${WORK_DIR}/weightless" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT out MATCHES "hydraulic conductivity K +[0-9.]*[1-9][0-9.e-]* m/s \\(at g = 9.81 m/s2")
   message(FATAL_ERROR "check with gravity = 0 does not quote K at standard gravity (${rc}):\n${out}\n${err}")
+endif()
+
+# 4d. Ctrl-C: the run checkpoints, says how to resume, exits with 130, and resumes to the end
+file(MAKE_DIRECTORY "${WORK_DIR}/interrupted")
+file(READ "${SOURCE_DIR}/cases/verification/falling_head/case.toml" longer)
+file(WRITE "${WORK_DIR}/interrupted/case.toml" "${longer}")
+execute_process(COMMAND timeout --preserve-status -s INT 1.5 "${QUICKSAND}" run "${WORK_DIR}/interrupted"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 130 OR NOT err MATCHES "interrupted by SIGINT at t = [0-9.]+ s .*checkpoint written to .*--resume"
+   OR NOT EXISTS "${WORK_DIR}/interrupted/output/checkpoint.h5")
+  message(FATAL_ERROR "Ctrl-C did not end the run with a checkpoint and exit code 130 (${rc}):\n${out}\n${err}")
+endif()
+execute_process(COMMAND "${QUICKSAND}" run "${WORK_DIR}/interrupted" --resume --quiet
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "the interrupted run did not resume (${rc}):\n${out}\n${err}")
 endif()
 
 # 5. case.toml that is a directory
