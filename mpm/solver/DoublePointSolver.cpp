@@ -160,13 +160,7 @@ void DoublePointSolver<D>::step() {
     gridToPoints();
     updatePressure();
     exchangeAtBoundaries();
-    if (!std::isfinite(gateFlux_)) {
-        std::ostringstream s;
-        s << "the solution became non-finite at t = " << time_ << " s (step " << steps_
-          << "); reduce time.courant (now " << config_.time.courant
-          << "), or with a coupled reservoir use coupling.scheme = \"implicit\"";
-        throw Error(s.str());
-    }
+    checkHealth();
 }
 
 template <int D>

@@ -19,9 +19,10 @@
 //   5 gridToPoints        FLIP velocities, positions, strains, stress, porosity, liquid volume
 //   6 updatePressure      cell pore-pressure increment from the mixed volumetric strain
 //   7 exchangeAtBoundaries  inflow injection, outflow removal, ledger, reservoir
+//   8 checkHealth         a non-finite value, a runaway point, a porosity outside (0, 1) stops the run
 // Every phase is deterministic: results do not depend on the number of OpenMP threads.
 // The phases live in their own files: PointsToGrid.cpp (1, 2), GridUpdate.cpp (3, 4),
-// LiquidStateSwitch.cpp (4b), FrontDiffusion.cpp (4c), GridToPoints.cpp (5, 6), BoundaryExchange.cpp (7); set-up and the step itself here in
+// LiquidStateSwitch.cpp (4b), FrontDiffusion.cpp (4c), GridToPoints.cpp (5, 6), BoundaryExchange.cpp (7), HealthCheck.cpp (8); set-up and the step itself here in
 // DoublePointSolver.cpp, the measurements in ColumnMeasurements.cpp, checkpoints in
 // SolverCheckpoint.cpp.
 #include <memory>
@@ -132,6 +133,7 @@ private:
     void gridToPoints();
     void updatePressure();
     void exchangeAtBoundaries();
+    void checkHealth() const;
 
     // helpers
     void allocate();

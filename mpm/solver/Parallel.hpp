@@ -34,6 +34,19 @@ inline void forAll(Index n, F&& f) {
     for (Index i = 0; i < n; ++i) f(i);
 }
 
+/// Whether pred(i) holds for any i in [0, n) (a parallel OR; which i is the caller's to find).
+template <class F>
+inline bool anyOf(Index n, F&& pred) {
+    bool any = false;
+    if (n < kMinParallelItems) {
+        for (Index i = 0; i < n && !any; ++i) any = pred(i);
+        return any;
+    }
+#pragma omp parallel for schedule(static) reduction(|| : any)
+    for (Index i = 0; i < n; ++i) any = any || pred(i);
+    return any;
+}
+
 template <int D, class F>
 void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellStart, F&& f) {
     IVec<D> blocks;

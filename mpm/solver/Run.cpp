@@ -250,12 +250,14 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
         reservoir.writeOutput(s.time);
         if (options.onOutput) options.onOutput(s, solver.profile());
     };
+    double lastCheckpoint = options.resume ? solver.time() : -1.0;
     auto checkpoint = [&]() {
         if (!options.writeFiles) return;
         CheckpointData data;
         solver.saveState(data);
         advancer->save(data);
         writeCheckpoint(checkpointPath.string(), data);
+        lastCheckpoint = solver.time();
     };
 
     if (!options.resume) { output(); nextOutput = interval; }
@@ -285,7 +287,18 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
             throw Interrupted(sig, m.str());
         }
         const long before = solver.stepCount();
-        advancer->advance(end);
+        try {
+            advancer->advance(end);
+        } catch (const Interrupted&) {
+            throw;
+        } catch (const Error& e) {
+            // the failed state is not written; the last good checkpoint stays as it was
+            if (!options.writeFiles || lastCheckpoint < 0) throw;
+            std::ostringstream m;
+            m << e.what() << ". The last good checkpoint, at t = " << lastCheckpoint << " s, is "
+              << checkpointPath.string();
+            throw Error(m.str());
+        }
         pointSteps += double(solver.stepCount() - before) * double(solver.solid().size() + solver.liquid().size());
         if (solver.time() >= nextOutput - half) {
             output();

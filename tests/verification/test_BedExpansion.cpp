@@ -142,7 +142,9 @@ TEST(BedExpansion, AnExpandedBedAtUniformPorosityStaysUniform) {
     EXPECT_NEAR(run.series.back().bedHeight, H, 5e-4);
     EXPECT_NEAR(run.series.back().bedHeight, H, 1e-4);  // guard: 1 um is achieved
     for (const auto& s : run.series)
-        if (s.time > 1.0) EXPECT_NEAR(s.monitorFlux.at(0), q2, 0.005 * q2) << "t = " << s.time;
+        if (s.time > 1.0) {
+            EXPECT_NEAR(s.monitorFlux.at(0), q2, 0.005 * q2) << "t = " << s.time;
+        }
     std::printf("uniform suspension at n = %.3f over 20 s: cells within %.4f, points within %.4f; bed height %+.3f mm\n",
                 n2, cell, point, 1000 * (run.series.back().bedHeight - H));
 }

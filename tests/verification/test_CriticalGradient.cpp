@@ -57,7 +57,9 @@ TEST(CriticalGradient, SandTurnsFluidisedOnlyAboveTheCriticalGradient) {
         } else {
             highestBefore = std::max(highestBefore, s.gradient);
         }
-        if (s.gradient < 0.97 * ic) EXPECT_EQ(s.fluidisedShare, 0.0) << "t = " << s.time << ", i = " << s.gradient;
+        if (s.gradient < 0.97 * ic) {
+            EXPECT_EQ(s.fluidisedShare, 0.0) << "t = " << s.time << ", i = " << s.gradient;
+        }
     }
     ASSERT_GT(onset, 0) << "no sand turned fluidised up to i = " << run.series.back().gradient;
     EXPECT_GE(onset, 0.97 * ic);

@@ -1,6 +1,8 @@
 // Run-time conditions a user can cause end in a clear qs::Error, never a crash.
 #include <gtest/gtest.h>
 
+#include <cstdio>
+
 #include "core/Error.hpp"
 #include "io/CaseLoader.hpp"
 #include "solver/Run.hpp"
@@ -41,5 +43,29 @@ TEST(RunErrors, TimeStepAboveTheStableOneIsRejected) {
         FAIL() << "dt = 1e-3 s should be rejected";
     } catch (const Error& e) {
         EXPECT_NE(std::string(e.what()).find("time.dt"), std::string::npos) << e.what();
+    }
+}
+
+TEST(RunErrors, AnUnstableStepIsCaughtWhereItStartsWithWhatWhereAndWhen) {
+    // a step four times the stable one (past the loader's courant <= 0.5, on purpose): the run
+    // stops at the first point that outruns a cell per step, before anything turns non-finite
+    CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/steady_seepage_B");
+    c.time.courant = 2.0;
+    c.time.end = 1.0;
+    RunOptions o;
+    o.quiet = true;
+    o.writeFiles = false;
+    try {
+        runCase(c, o);
+        FAIL() << "the unstable run should have stopped";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("numerical failure at t = "), std::string::npos) << what;
+        EXPECT_NE(what.find(" point "), std::string::npos) << what;
+        EXPECT_NE(what.find("elevation"), std::string::npos) << what;
+        EXPECT_NE(what.find("more than a cell per step"), std::string::npos) << what;
+        EXPECT_NE(what.find("time.courant"), std::string::npos) << what;
+        EXPECT_EQ(what.find("nan"), std::string::npos) << "caught only once non-finite: " << what;
+        std::printf("%s\n", what.c_str());
     }
 }
