@@ -37,6 +37,9 @@ constexpr const char* kMaterialKeys[] = {
     "tensile_strength", "k0",          "ergun",          "ergun_a",         "ergun_b",
     "permeability"};
 constexpr const char* kPermeabilityKeys[] = {"mode", "value", "grain_size"};
+/// kg/m3: below this a grain density is taken for a unit mistake (g/cm3); the lightest
+/// granular media modelled this way (plastic beads) are about 1 000 kg/m3.
+constexpr double kMinGrainDensity = 500.0;
 constexpr const char* kLayerKeys[] = {"material", "thickness", "zones"};
 constexpr const char* kZoneKeys[] = {"material", "x", "y"};
 constexpr const char* kLiquidKeys[] = {"density",
@@ -654,6 +657,11 @@ private:
         m.name = name;
         m.model = s.choice("model", ConstitutiveModelKind::LinearElastic, kModelOptions);
         m.grainDensity = s.optionalNumber("grain_density", 2650.0, positive("kg/m3"));
+        if (m.grainDensity < kMinGrainDensity)
+            s.fail("grain_density", "value " + number(m.grainDensity) + " kg/m3 is implausibly small (expected >= " +
+                                        number(kMinGrainDensity) +
+                                        " kg/m3; quartz sand: 2650 kg/m3). The unit is kg/m3, not g/cm3: 2.65 g/cm3 = "
+                                        "2650 kg/m3");
         m.porosity = s.requiredNumber("porosity", between(0, true, 1, true),
                                       "initial porosity n0, a fraction: 0.38, not 38");
         m.maxPorosity = s.optionalNumber("max_porosity", 0.41, between(0, true, 1, true));

@@ -79,7 +79,12 @@ void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver) {
 /// (an OpenFOAM case that does not load) puts it back, so earlier results are never lost.
 class OutputRotation {
 public:
-    explicit OutputRotation(fs::path outDir) : outDir_(std::move(outDir)) {
+    explicit OutputRotation(fs::path outDir, const std::string& caseFile) : outDir_(std::move(outDir)) {
+        // a file (not a directory) where the output should go is the user's, not old output
+        std::error_code ec;
+        if (fs::exists(outDir_, ec) && !fs::is_directory(outDir_, ec))
+            throw Error(caseFile + ": key 'output.directory': " + outDir_.string() +
+                        " is a file, not a directory; choose another output.directory or move the file");
         aside_ = outDir_.string() + ".moving-aside";
         fs::remove_all(aside_);
         if (fs::exists(outDir_)) fs::rename(outDir_, aside_);
@@ -184,7 +189,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
                  "cannot resume: no checkpoint at " << checkpointPath.string()
                                                     << " (run without --resume first)");
     std::optional<OutputRotation> rotation;
-    if (options.writeFiles && !options.resume) rotation.emplace(outDir);
+    if (options.writeFiles && !options.resume) rotation.emplace(outDir, config.caseDirectory + "/case.toml");
 
     // A windowed model (OpenFOAM) works in the output directory.
     std::unique_ptr<WindowedModel> ownedModel;
@@ -217,9 +222,17 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     }
 
     if (options.resume) {
-        const CheckpointData data = readCheckpoint(checkpointPath.string());
-        solver.loadState(data);
-        advancer->load(data);
+        try {
+            const CheckpointData data = readCheckpoint(checkpointPath.string());
+            solver.loadState(data);
+            advancer->load(data);
+        } catch (const Error& e) {
+            std::string what = e.what();
+            if (what.rfind(checkpointPath.string(), 0) != 0) what = checkpointPath.string() + ": " + what;
+            throw Error(what + ". This checkpoint cannot be resumed from; run without --resume to start again (the "
+                               "results now in " + outDir.string() + " are then kept as " + outDir.string() +
+                        ".previous)");
+        }
     } else {
         solver.runGravityStage();
     }
