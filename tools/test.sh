@@ -4,6 +4,9 @@
 #   bash tools/test.sh                  every test
 #   bash tools/test.sh -L verification  extra arguments go to ctest (here: one label only)
 #
+# Without arguments it then builds a second tree with AddressSanitizer and UBSan (build-sanitize)
+# and runs the fast labels (unit, hostile, resume, cli) there too (QUICKSAND_SANITIZE=0 skips it).
+#
 # Ends with CTest's summary line ("100% tests passed, 0 tests failed out of N") and exits with
 # CTest's exit code. A selection that matches no test is an error, not a silent pass.
 set -euo pipefail
@@ -21,6 +24,27 @@ set +e
 ctest --test-dir "$build_dir" --output-on-failure --no-tests=error -j2 "$@" 2>&1 | tee "$log"
 rc=${PIPESTATUS[0]}
 set -e
+
+# The fast labels again under AddressSanitizer and UndefinedBehaviorSanitizer (no OpenFOAM, which
+# is not built for them; the slow verification runs stay out to keep CI short). Only when the whole
+# suite is asked for: `bash tools/test.sh -L verification` runs that label alone. QUICKSAND_SANITIZE=0
+# skips it.
+if [[ $# -eq 0 && "${QUICKSAND_SANITIZE:-1}" != 0 ]]; then
+    asan_dir="${build_dir}-sanitize"
+    cmake -S . -B "$asan_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQUICKSAND_SANITIZE=ON \
+        -DQUICKSAND_WITH_OPENFOAM=OFF -DQUICKSAND_BUILD_BENCHMARKS=OFF >/dev/null
+    cmake --build "$asan_dir" -j2 >/dev/null
+    asan_log="$(mktemp)"
+    set +e
+    ctest --test-dir "$asan_dir" --output-on-failure --no-tests=error -j2 -L 'unit|hostile|resume|cli' 2>&1 \
+        | tee "$asan_log" | grep -E '^(.*\*\*\*|[0-9]+% tests passed)' | sed 's/^/sanitizers: /'
+    asan_rc=${PIPESTATUS[0]}
+    set -e
+    rm -f "$asan_log"
+    [[ $asan_rc -eq 0 ]] || rc=$asan_rc
+    # ctest's summary line of the whole suite, last, for CI
+    grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -1
+fi
 
 if ! grep -Eq '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log"; then
     echo "test.sh: ctest printed no summary line (no tests ran?); ctest exit code $rc" >&2
