@@ -1,5 +1,9 @@
 #include "io/FieldWriter.hpp"
 
+#include <cstring>
+
+#include <cerrno>
+
 #include "core/Error.hpp"
 
 #include <hdf5.h>
@@ -247,9 +251,16 @@ void FieldWriter::Impl::writeXdmf() const {
     {
         std::ofstream out(temporary, std::ios::trunc);
         if (!out) throw Error(temporary + ": cannot open for writing");
+        errno = 0;
         out << xdmfText();
         out.flush();
-        if (!out) throw Error(temporary + ": cannot write");
+        if (!out) {
+            const std::string reason = errno ? std::string(": ") + std::strerror(errno) : std::string();
+            out.close();
+            std::error_code ignored;
+            std::filesystem::remove(temporary, ignored);
+            throw Error(temporary + ": cannot write" + reason + "; " + xdmfPath + " is left as it was");
+        }
     }
     std::error_code error;
     std::filesystem::rename(temporary, xdmfPath, error);

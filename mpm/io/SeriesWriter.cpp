@@ -1,5 +1,7 @@
 #include "io/SeriesWriter.hpp"
 
+#include <unistd.h>
+
 #include "core/Error.hpp"
 
 #include <algorithm>
@@ -117,8 +119,14 @@ void SeriesWriter::openForResume(double resumeTime) {
         if (!out) throw Error(temporary + ": cannot open for writing");
         out << header << '\n';
         for (const std::string& k : kept) out << k << '\n';
+        errno = 0;
         out.flush();
-        if (!out) throw Error(temporary + ": cannot write");
+        if (!out) {
+            const std::string reason = systemReason();
+            out.close();
+            std::filesystem::remove(temporary, error);
+            throw Error(temporary + ": cannot write" + reason + "; " + path_ + " is left as it was");
+        }
     }
     std::filesystem::rename(temporary, path_, error);
     if (error) throw Error(path_ + ": cannot replace with " + temporary + ": " + error.message());
@@ -139,10 +147,17 @@ void SeriesWriter::write(const std::vector<double>& row) {
         line += number;
     }
     line += '\n';
-    // Flushed per line: the series of a running or crashed simulation can be plotted.
+    // Flushed per line: the series of a running or crashed simulation can be plotted. A line
+    // that cannot be written whole (a full disk) is cut off again, so the file keeps only
+    // complete lines.
+    const long before = std::ftell(file_);
     errno = 0;
-    if (std::fputs(line.c_str(), file_) < 0 || std::fflush(file_) != 0)
-        throw Error(path_ + ": cannot write a line" + systemReason());
+    if (std::fputs(line.c_str(), file_) < 0 || std::fflush(file_) != 0) {
+        const std::string reason = systemReason();
+        std::clearerr(file_);
+        if (before >= 0 && ::ftruncate(::fileno(file_), before) == 0) std::fseek(file_, before, SEEK_SET);
+        throw Error(path_ + ": cannot write a line" + reason + "; the file keeps the complete lines before it");
+    }
 }
 
 }  // namespace qs

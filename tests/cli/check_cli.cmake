@@ -6,7 +6,8 @@
 #     a case whose memory does not fit the machine;
 #  5. a case.toml that is a directory is named as such;
 #  and: check refuses what run refuses before its first step (a time step beyond the stable one),
-#  gravity = 0 quotes K at standard gravity, Ctrl-C checkpoints and exits with 130.
+#  gravity = 0 quotes K at standard gravity, Ctrl-C checkpoints and exits with 130, a full disk
+#  stops a run cleanly.
 file(GLOB_RECURSE cases "${SOURCE_DIR}/cases/*/case.toml")
 foreach(c IN LISTS cases)
   get_filename_component(dir "${c}" DIRECTORY)
@@ -94,6 +95,36 @@ execute_process(COMMAND "${QUICKSAND}" run "${WORK_DIR}/interrupted" --resume --
                 RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the interrupted run did not resume (${rc}):\n${out}\n${err}")
+endif()
+
+# 4e. a disk that fills up: the run stops with the system's reason, series.csv keeps only
+# complete lines, no temporary file is left behind. Needs a small tmpfs (root); skipped,
+# saying why, where mounting is not allowed.
+set(full "${WORK_DIR}/diskfull")
+file(MAKE_DIRECTORY "${full}/case" "${full}/mount")
+execute_process(COMMAND mount -t tmpfs -o size=200k tmpfs "${full}/mount" RESULT_VARIABLE mounted ERROR_VARIABLE why)
+if(mounted EQUAL 0)
+  string(REPLACE "end = 0.5" "end = 2.0" filling "${good}")
+  file(WRITE "${full}/case/case.toml" "${filling}\n[output]\ndirectory = \"${full}/mount/out\"\n")
+  execute_process(COMMAND "${QUICKSAND}" run "${full}/case" --quiet RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+  file(GLOB leftovers "${full}/mount/out/*.tmp")
+  file(STRINGS "${full}/mount/out/series.csv" rows)
+  execute_process(COMMAND umount "${full}/mount")
+  if(rc EQUAL 0 OR NOT err MATCHES "No space left on device" OR leftovers)
+    message(FATAL_ERROR "a full disk did not stop the run cleanly (${rc}, leftovers: ${leftovers}):\n${err}")
+  endif()
+  list(GET rows 0 header)
+  string(REGEX MATCHALL "," commas "${header}")
+  list(LENGTH commas ncols)
+  foreach(row IN LISTS rows)
+    string(REGEX MATCHALL "," c "${row}")
+    list(LENGTH c n)
+    if(NOT n EQUAL ncols)
+      message(FATAL_ERROR "series.csv on a full disk holds a half-written line: ${row}")
+    endif()
+  endforeach()
+else()
+  message(STATUS "SKIPPED the disk-full check: cannot mount a tmpfs here (${why})")
 endif()
 
 # 5. case.toml that is a directory
