@@ -285,6 +285,10 @@ FieldWriter::FieldWriter(const std::string& directory, int dimension) : impl_(st
     if (!impl_->file.valid()) fail(hdf5Path_, "create file");
     impl_->writeRootAttribute();
     if (H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL) < 0) fail(hdf5Path_, "flush file");
+    // Between outputs the file is closed: a crash then finds it complete, and HDF5's metadata
+    // cache, which grows with the file while it is open (from 17 to 32 MiB of resident memory
+    // over 200 outputs), is given back every time.
+    if (!impl_->file.close()) fail(hdf5Path_, "close file");
     impl_->writeXdmf();
 }
 
@@ -308,6 +312,8 @@ void FieldWriter::beginStep(double time) {
     QS_CHECK(!s.stepOpen, hdf5Path_ << ": beginStep(" << time << ") while the step at t = "
                                     << s.steps.back().time << " s is still open (call endStep first)");
     const std::string group = stepGroupName(static_cast<int>(s.steps.size()));
+    s.file = Hdf5Handle(H5Fopen(hdf5Path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
+    if (!s.file.valid()) fail(hdf5Path_, "reopen file to add the step at t = " + std::to_string(time) + " s");
     s.stepGroup = Hdf5Handle(H5Gcreate2(s.file.get(), group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
                              H5Gclose);
     if (!s.stepGroup.valid()) fail(hdf5Path_, "create group /" + group);
@@ -405,6 +411,7 @@ void FieldWriter::endStep() {
     s.stepOpen = false;
     s.stepGroup.close();
     if (H5Fflush(s.file.get(), H5F_SCOPE_GLOBAL) < 0) fail(hdf5Path_, "flush file");
+    if (!s.file.close()) fail(hdf5Path_, "close file");
     s.writeXdmf();
 }
 
