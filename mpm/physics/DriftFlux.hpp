@@ -24,6 +24,11 @@ struct SuspensionFlux {
     PermeabilityLaw law;
     double grainDensity = 2650, liquidDensity = 998.2, gravity = 9.81, viscosity = 8.91e-4;
 
+    /// The suspension of a case's material in the case's liquid, under the case's gravity.
+    static SuspensionFlux of(const CaseConfig& c, const MaterialConfig& m) {
+        return {PermeabilityLaw::from(m), m.grainDensity, c.liquid.density, c.gravity, c.liquid.viscosity};
+    }
+
     /// m/s, q(n): the filter velocity at which the drag carries the buoyant weight.
     double equilibriumFlux(double porosity) const;
     /// The porosity of the equilibrium suspension for filter velocity q (inverse of the above).

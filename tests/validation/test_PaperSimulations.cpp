@@ -45,16 +45,7 @@ Series runPaperCase(const std::string& name, const std::function<void(CaseConfig
     return s;
 }
 
-closed::SuspensionFlux fluxOf(const CaseConfig& c) {
-    closed::SuspensionFlux f;
-    const auto& m = c.materials.front();
-    f.law = PermeabilityLaw::from(m);
-    f.grainDensity = m.grainDensity;
-    f.liquidDensity = c.liquid.density;
-    f.gravity = c.gravity;
-    f.viscosity = c.liquid.viscosity;
-    return f;
-}
+closed::SuspensionFlux fluxOf(const CaseConfig& c) { return closed::SuspensionFlux::of(c, c.materials.front()); }
 
 }  // namespace
 

@@ -24,12 +24,7 @@ Errors runSettling(double cellSize) {
     const CaseRun run = runVerificationCase("batch_settling", [&](CaseConfig& c) { c.grid.cellSize = cellSize; });
     const auto& c = run.config;
     const auto& m = c.material("sand");
-    closed::SuspensionFlux flux;
-    flux.law = PermeabilityLaw::from(m);
-    flux.grainDensity = m.grainDensity;
-    flux.liquidDensity = c.liquid.density;
-    flux.gravity = c.gravity;
-    flux.viscosity = c.liquid.viscosity;
+    const auto flux = closed::SuspensionFlux::of(c, m);
     const double H0 = c.sandTop() - c.filterLevel();
     const auto b = closed::batchSettling(flux, m.porosity, m.maxPorosity, H0);
 

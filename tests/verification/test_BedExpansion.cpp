@@ -20,16 +20,7 @@ using namespace qs::test;
 
 namespace {
 
-closed::SuspensionFlux fluxOf(const CaseConfig& c) {
-    closed::SuspensionFlux f;
-    const auto& m = c.material("sand");
-    f.law = PermeabilityLaw::from(m);
-    f.grainDensity = m.grainDensity;
-    f.liquidDensity = c.liquid.density;
-    f.gravity = c.gravity;
-    f.viscosity = c.liquid.viscosity;
-    return f;
-}
+closed::SuspensionFlux fluxOf(const CaseConfig& c) { return closed::SuspensionFlux::of(c, c.material("sand")); }
 
 struct Errors {
     double height, plug, front, r2;
