@@ -1,11 +1,9 @@
 #include "io/Checkpoint.hpp"
 
 #include "core/Error.hpp"
+#include "io/Hdf5File.hpp"
 
 #include <hdf5.h>
-
-#include <fcntl.h>
-#include <unistd.h>
 
 #include <cstdio>
 #include <cstring>
@@ -19,44 +17,8 @@ namespace {
 const char* const kFormat = "quicksand-checkpoint";
 const int kVersion = 1;
 
-/// Owns one HDF5 identifier and releases it with the matching close function, so that every
-/// early exit by exception leaves no object open (an open object keeps the file open).
-class Hdf5Handle {
-public:
-    using Closer = herr_t (*)(hid_t);
-    Hdf5Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
-    Hdf5Handle(const Hdf5Handle&) = delete;
-    Hdf5Handle& operator=(const Hdf5Handle&) = delete;
-    ~Hdf5Handle() { close(); }
-    hid_t get() const { return id_; }
-    bool valid() const { return id_ >= 0; }
-    /// Closes now and reports whether closing succeeded (closing a file flushes it).
-    bool close() {
-        bool ok = true;
-        if (id_ >= 0) ok = closer_(id_) >= 0;
-        id_ = -1;
-        return ok;
-    }
-
-private:
-    hid_t id_;
-    Closer closer_;
-};
-
-/// The most specific message on HDF5's error stack, to make our own message concrete.
-std::string hdf5Reason() {
-    std::string reason;
-    auto collect = [](unsigned, const H5E_error2_t* error, void* data) -> herr_t {
-        if (error && error->desc && *error->desc) *static_cast<std::string*>(data) = error->desc;
-        return 0;
-    };
-    H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, collect, &reason);
-    return reason.empty() ? std::string() : " (HDF5: " + reason + ")";
-}
-
-[[noreturn]] void fail(const std::string& file, const std::string& operation) {
-    throw Error(file + ": cannot " + operation + hdf5Reason());
-}
+/// Checkpoint errors name the file they concern.
+[[noreturn]] void fail(const std::string& file, const std::string& operation) { failHdf5(file, operation); }
 
 const char* kindName(std::size_t variantIndex) {
     static const char* const names[] = {"doubles", "integers", "a scalar"};
@@ -97,16 +59,6 @@ void writeEntry(hid_t file, const std::string& path, const std::string& name, co
     // A zero-sized dataset needs no write (and HDF5 may reject the null buffer of an empty vector).
     if ((scalar || size > 0) && H5Dwrite(dataset.get(), memoryType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
         fail(path, "write dataset '" + name + "'");
-}
-
-/// Forces the file's bytes to disk, so that the rename that follows publishes a complete file
-/// even if the machine (not only the program) stops.
-void syncToDisk(const std::string& path) {
-    const int fd = ::open(path.c_str(), O_RDONLY);
-    if (fd < 0) throw Error(path + ": cannot open to flush to disk");
-    const int status = ::fsync(fd);
-    ::close(fd);
-    if (status != 0) throw Error(path + ": cannot flush to disk");
 }
 
 // ---- reading ---------------------------------------------------------------------------------
@@ -233,10 +185,7 @@ void writeCheckpoint(const std::string& path, const CheckpointData& data) {
             }
             if (!file.close()) fail(temporary, "close file");
         }
-        syncToDisk(temporary);
-        std::error_code error;
-        std::filesystem::rename(temporary, path, error);  // atomic on POSIX within one file system
-        if (error) throw Error(path + ": cannot replace with " + temporary + ": " + error.message());
+        publishFile(temporary, path);
     } catch (...) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);

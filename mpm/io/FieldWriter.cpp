@@ -5,6 +5,7 @@
 #include <cerrno>
 
 #include "core/Error.hpp"
+#include "io/Hdf5File.hpp"
 
 #include <hdf5.h>
 
@@ -20,57 +21,9 @@ namespace {
 
 const char* const kHdf5FileName = "fields.h5";
 const char* const kXdmfFileName = "fields.xdmf";
+const char* const kStepDirectoryName = "fields";  // one file per output step, beside fields.h5
 
-/// Owns one HDF5 identifier and releases it with the matching close function, so that every
-/// early exit by exception leaves no object open (an open object keeps the file open).
-class Hdf5Handle {
-public:
-    using Closer = herr_t (*)(hid_t);
-    Hdf5Handle() = default;
-    Hdf5Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
-    Hdf5Handle(Hdf5Handle&& other) noexcept : id_(other.id_), closer_(other.closer_) { other.id_ = -1; }
-    Hdf5Handle& operator=(Hdf5Handle&& other) noexcept {
-        if (this != &other) {
-            reset();
-            std::swap(id_, other.id_);
-            closer_ = other.closer_;
-        }
-        return *this;
-    }
-    Hdf5Handle(const Hdf5Handle&) = delete;
-    Hdf5Handle& operator=(const Hdf5Handle&) = delete;
-    ~Hdf5Handle() { reset(); }
-
-    hid_t get() const { return id_; }
-    bool valid() const { return id_ >= 0; }
-    /// Closes now and reports whether closing succeeded (closing a file flushes it).
-    bool close() {
-        bool ok = true;
-        if (id_ >= 0 && closer_) ok = closer_(id_) >= 0;
-        id_ = -1;
-        return ok;
-    }
-    void reset() { close(); }
-
-private:
-    hid_t id_ = -1;
-    Closer closer_ = nullptr;
-};
-
-/// The most specific message on HDF5's error stack, to make our own message concrete.
-std::string hdf5Reason() {
-    std::string reason;
-    auto collect = [](unsigned, const H5E_error2_t* error, void* data) -> herr_t {
-        if (error && error->desc && *error->desc) *static_cast<std::string*>(data) = error->desc;
-        return 0;
-    };
-    H5Ewalk2(H5E_DEFAULT, H5E_WALK_DOWNWARD, collect, &reason);
-    return reason.empty() ? std::string() : " (HDF5: " + reason + ")";
-}
-
-[[noreturn]] void fail(const std::string& file, const std::string& operation) {
-    throw Error(file + ": cannot " + operation + hdf5Reason());
-}
+[[noreturn]] void fail(const std::string& file, const std::string& operation) { failHdf5(file, operation); }
 
 /// Names become HDF5 link names and XML attribute values: keep them to a safe alphabet rather
 /// than escape them twice.
@@ -118,6 +71,22 @@ const char* xdmfAttributeType(StoredKind kind) {
     return "Scalar";
 }
 
+/// Group (or file) creation properties that keep the links in the order they were made, so that
+/// a resumed run reads a step's sets and fields back in the order they were written.
+Hdf5Handle creationOrdered(hid_t propertyClass) {
+    Hdf5Handle properties(H5Pcreate(propertyClass), H5Pclose);
+    if (properties.valid()) H5Pset_link_creation_order(properties.get(), H5P_CRT_ORDER_TRACKED | H5P_CRT_ORDER_INDEXED);
+    return properties;
+}
+
+/// How a point set's dataset was written, read back from its "components" attribute when a
+/// resumed run takes over the steps already on disk.
+StoredKind storedKindOf(const std::string& components, int columns) {
+    if (components == "x y z") return StoredKind::Vector;
+    if (components == "xx yy zz yz xz xy") return StoredKind::SymmetricTensor;
+    return columns == 1 ? StoredKind::Scalar : StoredKind::Matrix;
+}
+
 }  // namespace
 
 struct FieldWriter::Impl {
@@ -133,28 +102,33 @@ struct FieldWriter::Impl {
     };
     struct StepRecord {
         double time;
-        std::string group;
+        std::string group;  // step_NNNNNN: the link in fields.h5 and the file fields/step_NNNNNN.h5
         std::vector<SetRecord> sets;
     };
 
     std::string hdf5Path;
     std::string xdmfPath;
+    std::filesystem::path stepDirectory;
     int dimension = 0;
-    Hdf5Handle file;
-    Hdf5Handle stepGroup;
+    Hdf5Handle stepFile;       // open from beginStep to endStep, under its temporary name
+    Hdf5Handle stepGroup;      // the step file's root group
+    std::string stepTemporary;
     bool stepOpen = false;
     std::vector<StepRecord> steps;
     std::vector<double> padded;  // reused between calls to avoid reallocating each step
 
-    void writeRootAttribute();
+    std::string stepPath(const std::string& group) const { return (stepDirectory / (group + ".h5")).string(); }
+    void writeDimensionAttribute(hid_t file, const std::string& path);
     void writeDoubleAttribute(hid_t object, const std::string& objectPath, const char* name, double value);
     void writeStringAttribute(hid_t object, const std::string& objectPath, const char* name,
                               const std::string& value);
     void writeDataset(hid_t group, const std::string& groupPath, const std::string& name,
                       const void* data, hid_t memoryType, hid_t fileType, std::size_t rows, int columns,
                       const char* components);
+    void writeIndex() const;
     void writeXdmf() const;
     std::string xdmfText() const;
+    bool readStep(const std::string& group, double keepBefore, StepRecord& step) const;
 };
 
 void FieldWriter::Impl::writeDoubleAttribute(hid_t object, const std::string& objectPath,
@@ -163,27 +137,27 @@ void FieldWriter::Impl::writeDoubleAttribute(hid_t object, const std::string& ob
     Hdf5Handle attribute(H5Acreate2(object, name, H5T_IEEE_F64LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
                          H5Aclose);
     if (!space.valid() || !attribute.valid() || H5Awrite(attribute.get(), H5T_NATIVE_DOUBLE, &value) < 0)
-        fail(hdf5Path, "write attribute " + objectPath + "@" + name);
+        fail(stepTemporary, "write attribute " + objectPath + "@" + name);
 }
 
 void FieldWriter::Impl::writeStringAttribute(hid_t object, const std::string& objectPath,
                                              const char* name, const std::string& value) {
     Hdf5Handle type(H5Tcopy(H5T_C_S1), H5Tclose);
     if (!type.valid() || H5Tset_size(type.get(), value.size() + 1) < 0)
-        fail(hdf5Path, "make a string type for attribute " + objectPath + "@" + name);
+        fail(stepTemporary, "make a string type for attribute " + objectPath + "@" + name);
     Hdf5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
     Hdf5Handle attribute(H5Acreate2(object, name, type.get(), space.get(), H5P_DEFAULT, H5P_DEFAULT),
                          H5Aclose);
     if (!space.valid() || !attribute.valid() || H5Awrite(attribute.get(), type.get(), value.c_str()) < 0)
-        fail(hdf5Path, "write attribute " + objectPath + "@" + name);
+        fail(stepTemporary, "write attribute " + objectPath + "@" + name);
 }
 
-void FieldWriter::Impl::writeRootAttribute() {
+void FieldWriter::Impl::writeDimensionAttribute(hid_t file, const std::string& path) {
     Hdf5Handle space(H5Screate(H5S_SCALAR), H5Sclose);
-    Hdf5Handle attribute(
-        H5Acreate2(file.get(), "dimension", H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT), H5Aclose);
+    Hdf5Handle attribute(H5Acreate2(file, "dimension", H5T_STD_I32LE, space.get(), H5P_DEFAULT, H5P_DEFAULT),
+                         H5Aclose);
     if (!space.valid() || !attribute.valid() || H5Awrite(attribute.get(), H5T_NATIVE_INT, &dimension) < 0)
-        fail(hdf5Path, "write attribute /@dimension");
+        fail(path, "write attribute /@dimension");
 }
 
 void FieldWriter::Impl::writeDataset(hid_t group, const std::string& groupPath, const std::string& name,
@@ -192,19 +166,43 @@ void FieldWriter::Impl::writeDataset(hid_t group, const std::string& groupPath, 
     const std::string path = groupPath + "/" + name;
     const hsize_t dims[2] = {static_cast<hsize_t>(rows), static_cast<hsize_t>(columns)};
     Hdf5Handle space(H5Screate_simple(columns == 1 ? 1 : 2, dims, nullptr), H5Sclose);
-    if (!space.valid()) fail(hdf5Path, "make the dataspace of " + path);
+    if (!space.valid()) fail(stepTemporary, "make the dataspace of " + path);
     Hdf5Handle dataset(
         H5Dcreate2(group, name.c_str(), fileType, space.get(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
         H5Dclose);
-    if (!dataset.valid()) fail(hdf5Path, "create dataset " + path);
+    if (!dataset.valid()) fail(stepTemporary, "create dataset " + path);
     // A zero-sized dataset needs no write (and HDF5 would reject the null buffer).
     if (rows > 0 && H5Dwrite(dataset.get(), memoryType, H5S_ALL, H5S_ALL, H5P_DEFAULT, data) < 0)
-        fail(hdf5Path, "write dataset " + path);
+        fail(stepTemporary, "write dataset " + path);
     if (components) writeStringAttribute(dataset.get(), path, "components", components);
 }
 
+void FieldWriter::Impl::writeIndex() const {
+    // fields.h5 holds no data, only a link per step to its file: readers (h5py, ParaView, the
+    // HDF5 C API) see one file with groups /step_NNNNNN, and HDF5 finds each linked file relative
+    // to fields.h5's own directory. It is rewritten whole, so it too is replaced only by rename.
+    const std::string temporary = hdf5Path + ".tmp";
+    try {
+        Hdf5Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
+        if (!file.valid()) fail(temporary, "create file");
+        const_cast<Impl*>(this)->writeDimensionAttribute(file.get(), temporary);
+        for (const StepRecord& step : steps) {
+            if (stepOpen && &step == &steps.back()) break;
+            const std::string target = std::string(kStepDirectoryName) + "/" + step.group + ".h5";
+            if (H5Lcreate_external(target.c_str(), "/", file.get(), step.group.c_str(), H5P_DEFAULT, H5P_DEFAULT) <
+                0)
+                fail(temporary, "link /" + step.group + " to " + target);
+        }
+        if (!file.close()) fail(temporary, "close file");
+        publishFile(temporary, hdf5Path);
+    } catch (...) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw;
+    }
+}
+
 std::string FieldWriter::Impl::xdmfText() const {
-    const std::string h5 = kHdf5FileName;  // relative: the .xdmf sits beside the .h5
     std::ostringstream x;
     x << "<?xml version=\"1.0\" ?>\n"
       << "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
@@ -215,7 +213,7 @@ std::string FieldWriter::Impl::xdmfText() const {
           << "        <Time Value=\"" << formatDouble(step.time) << "\"/>\n";
         for (const SetRecord& set : step.sets) {
             if (set.count == 0) continue;  // zero-sized DataItems break the readers
-            const std::string base = h5 + ":/" + step.group + "/" + set.name + "/";
+            const std::string base = std::string(kStepDirectoryName) + "/" + step.group + ".h5:/" + set.name + "/";
             const std::string n = std::to_string(set.count);
             x << "        <Grid Name=\"" << set.name << "\" GridType=\"Uniform\">\n"
               << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
@@ -244,7 +242,6 @@ std::string FieldWriter::Impl::xdmfText() const {
       << "</Xdmf>\n";
     return x.str();
 }
-
 void FieldWriter::Impl::writeXdmf() const {
     // Write beside, then rename: a reader (or a crash) never sees a half-written file.
     const std::string temporary = xdmfPath + ".tmp";
@@ -267,7 +264,60 @@ void FieldWriter::Impl::writeXdmf() const {
     if (error) throw Error(xdmfPath + ": cannot replace with " + temporary + ": " + error.message());
 }
 
-FieldWriter::FieldWriter(const std::string& directory, int dimension) : impl_(std::make_unique<Impl>()) {
+bool FieldWriter::Impl::readStep(const std::string& group, double keepBefore, StepRecord& step) const {
+    const std::string path = stepPath(group);
+    std::error_code error;
+    if (!std::filesystem::is_regular_file(path, error) || H5Fis_hdf5(path.c_str()) <= 0) return false;
+    Hdf5Handle file(H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose);
+    if (!file.valid() || H5Aexists(file.get(), "time") <= 0) return false;
+    Hdf5Handle timeAttribute(H5Aopen(file.get(), "time", H5P_DEFAULT), H5Aclose);
+    step = {0.0, group, {}};
+    if (!timeAttribute.valid() || H5Aread(timeAttribute.get(), H5T_NATIVE_DOUBLE, &step.time) < 0) return false;
+    if (!(step.time < keepBefore)) return false;
+
+    // The sets and their fields, in the order writePointSet wrote them.
+    auto linkNames = [](hid_t parent) {
+        std::vector<std::string> names;
+        auto collect = [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t {
+            static_cast<std::vector<std::string>*>(data)->push_back(name);
+            return 0;
+        };
+        if (H5Literate(parent, H5_INDEX_CRT_ORDER, H5_ITER_INC, nullptr, collect, &names) < 0) {
+            names.clear();  // a file from before creation order was tracked: name order will do
+            H5Literate(parent, H5_INDEX_NAME, H5_ITER_INC, nullptr, collect, &names);
+        }
+        return names;
+    };
+    for (const std::string& setName : linkNames(file.get())) {
+        Hdf5Handle set(H5Gopen2(file.get(), setName.c_str(), H5P_DEFAULT), H5Gclose);
+        if (!set.valid()) return false;
+        SetRecord record{setName, 0, {}};
+        for (const std::string& name : linkNames(set.get())) {
+            Hdf5Handle dataset(H5Dopen2(set.get(), name.c_str(), H5P_DEFAULT), H5Dclose);
+            Hdf5Handle space(dataset.valid() ? H5Dget_space(dataset.get()) : -1, H5Sclose);
+            hsize_t dims[2] = {0, 1};
+            if (!space.valid() || H5Sget_simple_extent_dims(space.get(), dims, nullptr) < 0) return false;
+            if (name == "positions") record.count = static_cast<std::size_t>(dims[0]);
+            if (name == "positions" || name == "connectivity") continue;
+            std::string components;
+            if (H5Aexists(dataset.get(), "components") > 0) {
+                Hdf5Handle attribute(H5Aopen(dataset.get(), "components", H5P_DEFAULT), H5Aclose);
+                Hdf5Handle type(attribute.valid() ? H5Aget_type(attribute.get()) : -1, H5Tclose);
+                if (!type.valid()) return false;
+                components.assign(H5Tget_size(type.get()), '\0');
+                if (H5Aread(attribute.get(), type.get(), &components[0]) < 0) return false;
+                components.resize(std::strlen(components.c_str()));
+            }
+            const int columns = static_cast<int>(dims[1]);
+            record.attributes.push_back({name, storedKindOf(components, columns), columns});
+        }
+        step.sets.push_back(std::move(record));
+    }
+    return true;
+}
+
+FieldWriter::FieldWriter(const std::string& directory, int dimension, double keepStepsBefore)
+    : impl_(std::make_unique<Impl>()) {
     QS_CHECK(dimension >= 1 && dimension <= 3,
              "FieldWriter: dimension must be 1, 2 or 3, got " << dimension);
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);  // we report errors ourselves, as qs::Error
@@ -276,20 +326,28 @@ FieldWriter::FieldWriter(const std::string& directory, int dimension) : impl_(st
     std::filesystem::create_directories(dir, error);
     if (error) throw Error(directory + ": cannot create output directory: " + error.message());
 
+    Impl& s = *impl_;
     hdf5Path_ = (dir / kHdf5FileName).string();
     xdmfPath_ = (dir / kXdmfFileName).string();
-    impl_->hdf5Path = hdf5Path_;
-    impl_->xdmfPath = xdmfPath_;
-    impl_->dimension = dimension;
-    impl_->file = Hdf5Handle(H5Fcreate(hdf5Path_.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-    if (!impl_->file.valid()) fail(hdf5Path_, "create file");
-    impl_->writeRootAttribute();
-    if (H5Fflush(impl_->file.get(), H5F_SCOPE_GLOBAL) < 0) fail(hdf5Path_, "flush file");
-    // Between outputs the file is closed: a crash then finds it complete, and HDF5's metadata
-    // cache, which grows with the file while it is open (from 17 to 32 MiB of resident memory
-    // over 200 outputs), is given back every time.
-    if (!impl_->file.close()) fail(hdf5Path_, "close file");
-    impl_->writeXdmf();
+    s.hdf5Path = hdf5Path_;
+    s.xdmfPath = xdmfPath_;
+    s.stepDirectory = dir / kStepDirectoryName;
+    s.dimension = dimension;
+
+    // Take over the steps already written before keepStepsBefore, in order, up to the first one
+    // missing, unreadable or later; every other step file (and any temporary) is removed.
+    std::filesystem::create_directories(s.stepDirectory, error);
+    if (error) throw Error(s.stepDirectory.string() + ": cannot create directory: " + error.message());
+    for (Impl::StepRecord step; s.readStep(stepGroupName(static_cast<int>(s.steps.size())), keepStepsBefore, step);)
+        s.steps.push_back(std::move(step));
+    for (const auto& entry : std::filesystem::directory_iterator(s.stepDirectory, error)) {
+        const std::string name = entry.path().filename().string();
+        bool kept = false;
+        for (const Impl::StepRecord& step : s.steps) kept = kept || name == step.group + ".h5";
+        if (!kept) std::filesystem::remove_all(entry.path(), error);
+    }
+    s.writeIndex();
+    s.writeXdmf();
 }
 
 FieldWriter::~FieldWriter() {
@@ -300,7 +358,9 @@ FieldWriter::~FieldWriter() {
         // A destructor must not throw; the last complete step stays readable.
     }
     impl_->stepGroup.close();
-    impl_->file.close();
+    impl_->stepFile.close();
+    std::error_code ignored;
+    if (!impl_->stepTemporary.empty()) std::filesystem::remove(impl_->stepTemporary, ignored);
 }
 
 int FieldWriter::stepsWritten() const {
@@ -312,12 +372,16 @@ void FieldWriter::beginStep(double time) {
     QS_CHECK(!s.stepOpen, hdf5Path_ << ": beginStep(" << time << ") while the step at t = "
                                     << s.steps.back().time << " s is still open (call endStep first)");
     const std::string group = stepGroupName(static_cast<int>(s.steps.size()));
-    s.file = Hdf5Handle(H5Fopen(hdf5Path_.c_str(), H5F_ACC_RDWR, H5P_DEFAULT), H5Fclose);
-    if (!s.file.valid()) fail(hdf5Path_, "reopen file to add the step at t = " + std::to_string(time) + " s");
-    s.stepGroup = Hdf5Handle(H5Gcreate2(s.file.get(), group.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                             H5Gclose);
-    if (!s.stepGroup.valid()) fail(hdf5Path_, "create group /" + group);
-    s.writeDoubleAttribute(s.stepGroup.get(), "/" + group, "time", time);
+    s.stepTemporary = s.stepPath(group) + ".tmp";
+    s.stepFile = Hdf5Handle(
+        H5Fcreate(s.stepTemporary.c_str(), H5F_ACC_TRUNC, creationOrdered(H5P_FILE_CREATE).get(), H5P_DEFAULT),
+        H5Fclose);
+    if (!s.stepFile.valid())
+        fail(s.stepTemporary, "create the file of the step at t = " + formatDouble(time) + " s");
+    s.stepGroup = Hdf5Handle(H5Gopen2(s.stepFile.get(), "/", H5P_DEFAULT), H5Gclose);
+    if (!s.stepGroup.valid()) fail(s.stepTemporary, "open group /");
+    s.writeDimensionAttribute(s.stepFile.get(), s.stepTemporary);
+    s.writeDoubleAttribute(s.stepGroup.get(), "/", "time", time);
     s.steps.push_back({time, group, {}});
     s.stepOpen = true;
 }
@@ -371,10 +435,11 @@ void FieldWriter::writePointSet(const std::string& setName, std::size_t count, c
         attributes.push_back({f.name, kind, columns});
     }
 
-    const std::string groupPath = "/" + step.group + "/" + setName;
-    Hdf5Handle group(H5Gcreate2(s.stepGroup.get(), setName.c_str(), H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT),
-                     H5Gclose);
-    if (!group.valid()) fail(hdf5Path_, "create group " + groupPath);
+    const std::string groupPath = "/" + setName;
+    Hdf5Handle group(
+        H5Gcreate2(s.stepGroup.get(), setName.c_str(), H5P_DEFAULT, creationOrdered(H5P_GROUP_CREATE).get(), H5P_DEFAULT),
+        H5Gclose);
+    if (!group.valid()) fail(s.stepTemporary, "create group " + groupPath);
 
     if (count > 0) padToXyz(positions, count, D, s.padded);
     s.writeDataset(group.get(), groupPath, "positions", s.padded.data(), H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE,
@@ -408,10 +473,23 @@ void FieldWriter::writePointSet(const std::string& setName, std::size_t count, c
 void FieldWriter::endStep() {
     Impl& s = *impl_;
     QS_CHECK(s.stepOpen, hdf5Path_ << ": endStep() without beginStep()");
-    s.stepOpen = false;
     s.stepGroup.close();
-    if (H5Fflush(s.file.get(), H5F_SCOPE_GLOBAL) < 0) fail(hdf5Path_, "flush file");
-    if (!s.file.close()) fail(hdf5Path_, "close file");
+    const bool closed = s.stepFile.close();
+    try {
+        if (!closed) fail(s.stepTemporary, "close file");
+        publishFile(s.stepTemporary, s.stepPath(s.steps.back().group));
+    } catch (...) {
+        // The step is lost, the series before it is not: forget it and remove its remains.
+        std::error_code ignored;
+        std::filesystem::remove(s.stepTemporary, ignored);
+        s.steps.pop_back();
+        s.stepOpen = false;
+        s.stepTemporary.clear();
+        throw;
+    }
+    s.stepTemporary.clear();
+    s.stepOpen = false;
+    s.writeIndex();
     s.writeXdmf();
 }
 

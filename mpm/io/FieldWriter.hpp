@@ -2,8 +2,13 @@
 // FieldWriter: material-point fields over time, in OUTDIR/fields.h5 with OUTDIR/fields.xdmf beside
 // it so that ParaView (or VisIt) opens the whole series as one time-dependent data set.
 //
+// Never half-written: each output step is a file of its own, OUTDIR/fields/step_NNNNNN.h5,
+// written under a temporary name, forced to disk and renamed into place. fields.h5 itself holds
+// only external links, /step_NNNNNN -> fields/step_NNNNNN.h5:/, and is replaced (by rename) after
+// each step, as is fields.xdmf. A crash or a full disk mid-step loses that step only.
+//
 // Usage:
-//   FieldWriter writer(outputDirectory, D);          // creates (truncates) both files
+//   FieldWriter writer(outputDirectory, D);          // a new series: both files, no steps
 //   for each output time t:
 //     writer.beginStep(t);
 //     writer.writePointSet("solid", n, positions, {{"porosity", phi, 1},
@@ -11,9 +16,10 @@
 //     writer.writePointSet("liquid", m, ...);
 //     writer.endStep();                              // flushes; fields.xdmf is valid again
 //
-// Layout of fields.h5 (all datasets double, row-major, one row per point):
+// Layout of fields.h5 as a reader sees it through the links (all datasets double, row-major,
+// one row per point):
 //   /                       attribute dimension (int, 1..3)
-//   /step_000000            attribute time (double, s)
+//   /step_000000            attribute time (double, s); also dimension (it is a file's root)
 //   /step_000000/solid/positions     [n][3]  m, always XYZ (see "Vertical axis" below)
 //   /step_000000/solid/connectivity  [n]     int32 0..n-1: the explicit Polyvertex topology, as
 //                                            ParaView's Xdmf3 reader reads point ids from it
@@ -59,9 +65,11 @@ struct PointField {
 
 class FieldWriter {
 public:
-    /// Creates directory if needed, then creates (truncates) directory/fields.h5 and
-    /// directory/fields.xdmf (an empty but valid series). dimension = 1..3.
-    FieldWriter(const std::string& directory, int dimension);
+    /// Creates directory if needed, then writes directory/fields.h5 and directory/fields.xdmf.
+    /// The steps already in directory/fields with a time before keepStepsBefore (s) are kept, in
+    /// order (a resumed run passes its first new output time); all other step files are removed.
+    /// The default keeps none: a new series. dimension = 1..3.
+    explicit FieldWriter(const std::string& directory, int dimension, double keepStepsBefore = -1e300);
     /// Finishes an open step (as endStep() would, errors swallowed) and closes the file.
     ~FieldWriter();
 
@@ -76,8 +84,8 @@ public:
     /// arrays may change after the call.
     void writePointSet(const std::string& setName, std::size_t count, const double* positions,
                        const std::vector<PointField>& fields);
-    /// Flushes fields.h5 and rewrites fields.xdmf (atomically, via a temporary and rename) so a
-    /// crash after it leaves both files readable. Pre: a step is open.
+    /// Publishes the step's file, then fields.h5 and fields.xdmf (each by rename). If it throws,
+    /// the step is dropped and the files are as after the previous step. Pre: a step is open.
     void endStep();
 
     const std::string& hdf5Path() const { return hdf5Path_; }

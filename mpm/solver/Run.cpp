@@ -243,8 +243,6 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
         series = std::make_unique<SeriesWriter>((outDir / "series.csv").string(),
                                                 seriesColumns(config), options.resume,
                                                 solver.time());
-        // fields.h5 is rewritten on resume from the checkpoint time on
-        if (config.output.fields) fields = std::make_unique<FieldWriter>(outDir.string(), D);
     }
 
     const double interval = config.time.outputInterval;
@@ -253,6 +251,9 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     const double halfStep = 0.5 * solver.dt();
     double nextOutput =
         options.resume ? (std::floor((solver.time() + halfStep) / interval) + 1) * interval : 0.0;
+    // a resumed run keeps the field steps written before its first new output
+    if (options.writeFiles && config.output.fields)
+        fields = std::make_unique<FieldWriter>(outDir.string(), D, options.resume ? nextOutput - halfStep : -1e300);
     double nextCheckpoint = config.time.checkpointInterval > 0
                                 ? solver.time() + config.time.checkpointInterval
                                 : 1e300;

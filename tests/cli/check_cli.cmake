@@ -96,6 +96,18 @@ execute_process(COMMAND "${QUICKSAND}" run "${WORK_DIR}/interrupted" --resume --
 if(NOT rc EQUAL 0)
   message(FATAL_ERROR "the interrupted run did not resume (${rc}):\n${out}\n${err}")
 endif()
+# the resumed run keeps the field steps from before the interruption: one per series line
+file(STRINGS "${WORK_DIR}/interrupted/output/series.csv" rows)
+list(LENGTH rows row_count)
+file(READ "${WORK_DIR}/interrupted/output/fields.xdmf" xdmf)
+string(REGEX MATCHALL "<Time Value=\"[^\"]*\"" times "${xdmf}")
+list(LENGTH times time_count)
+list(GET times 0 first_time)
+math(EXPR output_count "${row_count} - 1")
+if(NOT time_count EQUAL output_count OR NOT first_time STREQUAL "<Time Value=\"0\"")
+  message(FATAL_ERROR "the resumed run's fields.xdmf has ${time_count} steps from ${first_time}, "
+                      "series.csv ${output_count} outputs")
+endif()
 
 # 4e. a disk that fills up: the run stops with the system's reason, series.csv keeps only
 # complete lines, no temporary file is left behind. Needs a small tmpfs (root); skipped,

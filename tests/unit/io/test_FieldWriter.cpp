@@ -8,6 +8,7 @@
 
 #include <unistd.h>
 
+#include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
@@ -180,7 +181,7 @@ TEST_F(FieldWriterTest, XdmfIndexesEveryStepAndDatasetAndIsValidAfterEachStep) {
     writer.endStep();
     // Readable while the run goes on (a crash from here on loses nothing written so far).
     std::string xdmf = readText(dir_ / "fields.xdmf");
-    EXPECT_NE(xdmf.find("fields.h5:/step_000000/liquid/pore_pressure"), std::string::npos);
+    EXPECT_NE(xdmf.find("fields/step_000000.h5:/liquid/pore_pressure"), std::string::npos);
     EXPECT_EQ(occurrences(xdmf, "<Time "), 1);
 
     writer.beginStep(0.5);
@@ -192,9 +193,9 @@ TEST_F(FieldWriterTest, XdmfIndexesEveryStepAndDatasetAndIsValidAfterEachStep) {
     EXPECT_NE(xdmf.find("<Time Value=\"0.5\"/>"), std::string::npos);
     EXPECT_NE(xdmf.find("TopologyType=\"Polyvertex\""), std::string::npos);
     EXPECT_NE(xdmf.find("GeometryType=\"XYZ\""), std::string::npos);
-    for (const char* dataset : {"fields.h5:/step_000000/solid/positions", "fields.h5:/step_000000/solid/porosity",
-                                "fields.h5:/step_000001/solid/connectivity", "fields.h5:/step_000001/liquid/positions",
-                                "fields.h5:/step_000001/liquid/pore_pressure"})
+    for (const char* dataset : {"fields/step_000000.h5:/solid/positions", "fields/step_000000.h5:/solid/porosity",
+                                "fields/step_000001.h5:/solid/connectivity", "fields/step_000001.h5:/liquid/positions",
+                                "fields/step_000001.h5:/liquid/pore_pressure"})
         EXPECT_NE(xdmf.find(dataset), std::string::npos) << dataset;
     EXPECT_EQ(occurrences(xdmf, "<Grid "), occurrences(xdmf, "</Grid>"));
     EXPECT_EQ(occurrences(xdmf, "<Grid Name=\"solid\""), 2);
@@ -230,7 +231,7 @@ TEST_F(FieldWriterTest, DestructorFinishesAnOpenStep) {
         writer.beginStep(2.0);
         writer.writePointSet("solid", 1, z.data(), {});
     }
-    EXPECT_NE(readText(dir_ / "fields.xdmf").find("fields.h5:/step_000000/solid/positions"), std::string::npos);
+    EXPECT_NE(readText(dir_ / "fields.xdmf").find("fields/step_000000.h5:/solid/positions"), std::string::npos);
 }
 
 TEST_F(FieldWriterTest, ConstructorTruncatesAPreviousRun) {
@@ -285,6 +286,114 @@ TEST_F(FieldWriterTest, UncreatableFileThrowsNamingThePath) {
         FAIL() << "expected qs::Error";
     } catch (const qs::Error& e) {
         EXPECT_NE(std::string(e.what()).find("fields.h5"), std::string::npos) << e.what();
-        EXPECT_NE(std::string(e.what()).find("create file"), std::string::npos) << e.what();
     }
+}
+
+/// Names of the files in a directory, sorted.
+std::vector<std::string> filesIn(const fs::path& directory) {
+    std::vector<std::string> names;
+    for (const auto& entry : fs::directory_iterator(directory)) names.push_back(entry.path().filename().string());
+    std::sort(names.begin(), names.end());
+    return names;
+}
+
+TEST_F(FieldWriterTest, EachStepIsAFileOfItsOwnPublishedByRename) {
+    const std::vector<double> z = {0.1, 0.2};
+    qs::FieldWriter writer(dir_.string(), 1);
+    for (int step = 0; step < 3; ++step) {
+        writer.beginStep(0.5 * step);
+        writer.writePointSet("solid", 2, z.data(), {{"porosity", z.data(), 1}});
+        // Mid-step the new step exists only under its temporary name; fields.h5 does not link it.
+        EXPECT_TRUE(fs::exists(dir_ / "fields" / ("step_00000" + std::to_string(step) + ".h5.tmp")));
+        const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        ASSERT_GE(file, 0);
+        EXPECT_FALSE(exists(file, "/step_00000" + std::to_string(step)));
+        H5Fclose(file);
+        writer.endStep();
+    }
+    EXPECT_EQ(filesIn(dir_ / "fields"),
+              (std::vector<std::string>{"step_000000.h5", "step_000001.h5", "step_000002.h5"}));
+    EXPECT_EQ(filesIn(dir_), (std::vector<std::string>{"fields", "fields.h5", "fields.xdmf"}));
+    const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    EXPECT_EQ(readDoubleAttribute(file, "/step_000002", "time"), 1.0);
+    EXPECT_EQ(readDoubles(file, "/step_000002/solid/porosity"), z);
+    H5Fclose(file);
+}
+
+TEST_F(FieldWriterTest, AStepThatCannotBePublishedLeavesTheSeriesBeforeIt) {
+    const std::vector<double> z = {0.1};
+    qs::FieldWriter writer(dir_.string(), 1);
+    writer.beginStep(0.0);
+    writer.writePointSet("solid", 1, z.data(), {});
+    writer.endStep();
+    // A directory in the way of the second step's file: the rename fails, as a full disk would.
+    fs::create_directories(dir_ / "fields" / "step_000001.h5" / "in_the_way");
+    writer.beginStep(0.5);
+    writer.writePointSet("solid", 1, z.data(), {});
+    try {
+        writer.endStep();
+        FAIL() << "expected qs::Error";
+    } catch (const qs::Error& e) {
+        EXPECT_NE(std::string(e.what()).find("step_000001.h5"), std::string::npos) << e.what();
+    }
+    EXPECT_FALSE(fs::exists(dir_ / "fields" / "step_000001.h5.tmp"));
+    EXPECT_EQ(writer.stepsWritten(), 1);
+    const std::string xdmf = readText(dir_ / "fields.xdmf");
+    EXPECT_EQ(occurrences(xdmf, "<Time "), 1);
+    const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    EXPECT_TRUE(exists(file, "/step_000000"));
+    EXPECT_FALSE(exists(file, "/step_000001"));
+    H5Fclose(file);
+}
+
+TEST_F(FieldWriterTest, AResumedSeriesKeepsTheStepsBeforeItsFirstNewOutput) {
+    const std::vector<double> z = {0.1, 0.2};
+    const std::vector<double> v = {1.0, 2.0};
+    const std::vector<double> sigma(12, 3.0);
+    {
+        qs::FieldWriter writer(dir_.string(), 1);
+        for (int step = 0; step < 4; ++step) {
+            writer.beginStep(0.5 * step);
+            writer.writePointSet("solid", 2, z.data(),
+                                 {{"porosity", z.data(), 1},
+                                  {"velocity", v.data(), 1, qs::FieldKind::Vector},
+                                  {"effective_stress", sigma.data(), 6}});
+            writer.writePointSet("liquid", 0, nullptr, {});
+            writer.endStep();
+        }
+    }
+    const std::string before = readText(dir_ / "fields.xdmf");
+    std::ofstream(dir_ / "fields" / "step_000009.h5.tmp") << "a crash's leftover";
+    {
+        // Resumed at t = 0.6 s: its first new output is at 1.0 s, so 0, 0.5 stay and 1.0, 1.5 go.
+        qs::FieldWriter writer(dir_.string(), 1, 1.0 - 1e-6);
+        EXPECT_EQ(writer.stepsWritten(), 2);
+        writer.beginStep(1.0);
+        writer.writePointSet("solid", 2, z.data(),
+                             {{"porosity", v.data(), 1},
+                              {"velocity", v.data(), 1, qs::FieldKind::Vector},
+                              {"effective_stress", sigma.data(), 6}});
+        writer.writePointSet("liquid", 0, nullptr, {});
+        writer.endStep();
+    }
+    EXPECT_EQ(filesIn(dir_ / "fields"),
+              (std::vector<std::string>{"step_000000.h5", "step_000001.h5", "step_000002.h5"}));
+    const std::string after = readText(dir_ / "fields.xdmf");
+    EXPECT_EQ(occurrences(after, "<Time "), 3);
+    // The kept steps are indexed as they were written: same vector and tensor attributes.
+    const std::string stepOne = before.substr(before.find("<Grid Name=\"step_000001\""),
+                                              before.find("<Grid Name=\"step_000002\"") -
+                                                  before.find("<Grid Name=\"step_000001\""));
+    EXPECT_NE(after.find(stepOne), std::string::npos) << stepOne;
+    EXPECT_NE(stepOne.find("AttributeType=\"Tensor6\""), std::string::npos);
+    EXPECT_NE(stepOne.find("AttributeType=\"Vector\""), std::string::npos);
+    const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    EXPECT_EQ(readDoubleAttribute(file, "/step_000001", "time"), 0.5);
+    EXPECT_EQ(readDoubles(file, "/step_000001/solid/porosity"), z);
+    EXPECT_EQ(readDoubles(file, "/step_000002/solid/porosity"), v);
+    EXPECT_FALSE(exists(file, "/step_000003"));
+    H5Fclose(file);
 }

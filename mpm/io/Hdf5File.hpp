@@ -1,0 +1,63 @@
+#pragma once
+// What every HDF5 writer and reader in io/ shares: a handle that closes what it owns, errors
+// that name the file and HDF5's own reason, and publishing a finished file by rename.
+//
+// Publishing: a file is written under a temporary name beside its final one, closed, forced to
+// disk, then renamed over the final name. A rename within one file system is atomic on POSIX,
+// so a reader, a crash or a full disk never finds a half-written file under the final name.
+#include <hdf5.h>
+
+#include <string>
+#include <utility>
+
+namespace qs {
+
+/// Owns one HDF5 identifier and releases it with the matching close function, so that every
+/// early exit by exception leaves no object open (an open object keeps the file open).
+class Hdf5Handle {
+public:
+    using Closer = herr_t (*)(hid_t);
+    Hdf5Handle() = default;
+    Hdf5Handle(hid_t id, Closer closer) : id_(id), closer_(closer) {}
+    Hdf5Handle(Hdf5Handle&& other) noexcept : id_(other.id_), closer_(other.closer_) { other.id_ = -1; }
+    Hdf5Handle& operator=(Hdf5Handle&& other) noexcept {
+        if (this != &other) {
+            close();
+            std::swap(id_, other.id_);
+            closer_ = other.closer_;
+        }
+        return *this;
+    }
+    Hdf5Handle(const Hdf5Handle&) = delete;
+    Hdf5Handle& operator=(const Hdf5Handle&) = delete;
+    ~Hdf5Handle() { close(); }
+
+    hid_t get() const { return id_; }
+    bool valid() const { return id_ >= 0; }
+    /// Closes now and reports whether closing succeeded (closing a file flushes it).
+    bool close() {
+        bool ok = true;
+        if (id_ >= 0 && closer_) ok = closer_(id_) >= 0;
+        id_ = -1;
+        return ok;
+    }
+
+private:
+    hid_t id_ = -1;
+    Closer closer_ = nullptr;
+};
+
+/// The most specific message on HDF5's error stack, as " (HDF5: ...)", or "" when it is empty.
+std::string hdf5Reason();
+
+/// Throws qs::Error "FILE: cannot OPERATION (HDF5: reason)".
+[[noreturn]] void failHdf5(const std::string& file, const std::string& operation);
+
+/// Forces the file's bytes to disk, so that a rename that follows publishes a complete file even
+/// if the machine (not only the program) stops. Throws qs::Error naming the file.
+void syncToDisk(const std::string& path);
+
+/// Forces `temporary` to disk and renames it over `path`. Throws qs::Error naming both.
+void publishFile(const std::string& temporary, const std::string& path);
+
+}  // namespace qs
