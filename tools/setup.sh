@@ -3,6 +3,7 @@
 #
 #   bash tools/setup.sh              compiler, CMake, Eigen, HDF5, toml++, GoogleTest/Mock,
 #                                    Google Benchmark, Python plotting
+#   bash tools/setup.sh --fuzz       the same plus clang with libFuzzer and OpenMP (tests/fuzz)
 #   bash tools/setup.sh --openfoam   the same plus Debian's `openfoam` package (OpenFOAM reservoir)
 #                                    and its headers: the source package of the installed version,
 #                                    fetched once into ~/.cache/quicksand/openfoam-src (or
@@ -13,17 +14,18 @@
 # Uses sudo only when not run as root.
 set -euo pipefail
 
-usage() { sed -n '2,13p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,14p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
-packages=(cmake g++ make pkg-config libeigen3-dev libhdf5-dev libtomlplusplus-dev
+packages=(cmake g++ make pkg-config libeigen3-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev
           libgtest-dev libgmock-dev libbenchmark-dev
           python3-matplotlib python3-numpy python3-h5py)
 with_openfoam=false
 for arg in "$@"; do
     case "$arg" in
         --openfoam) with_openfoam=true ;;
+        --fuzz) packages+=(clang libclang-rt-dev libomp-dev) ;;
         -h|--help) usage; exit 0 ;;
-        *) echo "setup.sh: unknown option '$arg' (known: --openfoam, --help)" >&2; exit 2 ;;
+        *) echo "setup.sh: unknown option '$arg' (known: --openfoam, --fuzz, --help)" >&2; exit 2 ;;
     esac
 done
 # the OpenFOAM headers come from the source package, checked with the Debian archive keyring:

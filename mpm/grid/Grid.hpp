@@ -70,12 +70,14 @@ public:
         for (int d = 0; d < D; ++d) { n[d] = k % nodes_[d]; k /= nodes_[d]; }
         return n;
     }
-    /// The cell holding x (clamped to the grid).
+    /// The cell holding x (clamped to the grid). Clamped before the conversion to an integer, so
+    /// that a point gone to infinity or NaN (which the health check then reports) is in cell 0 or
+    /// the last cell rather than undefined behaviour.
     Index cellOf(const Real* x) const {
         Index k = 0;
         for (int d = 0; d < D; ++d) {
-            Index c = static_cast<Index>(std::floor(x[d] / h_));
-            c = c < 0 ? 0 : (c >= cells_[d] ? cells_[d] - 1 : c);
+            const Real s = std::floor(x[d] / h_);
+            const Index c = !(s >= 0) ? 0 : (s >= static_cast<Real>(cells_[d]) ? cells_[d] - 1 : static_cast<Index>(s));
             k += c * cellStride_[d];
         }
         return k;

@@ -54,7 +54,10 @@ inline void gimpHat(Real r, Real h, Real lp, Real& N, Real& dN) {
 inline AxisWeights axisWeights(Real x, Real h, Index cells, ShapeFunctionKind kind, Real lp) {
     AxisWeights a;
     const Real xi = x / h;
-    Index c = static_cast<Index>(std::floor(xi));
+    // clamped before the conversion: a point gone to infinity or NaN is the health check's to
+    // report, not undefined behaviour here
+    const Real cell = std::floor(xi);
+    const Index c = !(cell >= -1) ? -1 : (cell > static_cast<Real>(cells) ? cells : static_cast<Index>(cell));
     // uGIMP reaches the node below when the point sits in the lower half of its cell.
     Index s = (kind == ShapeFunctionKind::Gimp && xi - c < 0.5) ? c - 1 : c;
     s = s < 0 ? 0 : (s > cells - 2 ? cells - 2 : s);

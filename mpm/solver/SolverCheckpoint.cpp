@@ -1,6 +1,8 @@
 // Checkpoint and resume of DoublePointSolver: the persistent state (points, per-node relative
 // speed of the Forchheimer term, chamber gaps, clock and ledger) and the reservoir's own state.
 // Per-step scratch (shape functions, cell lists, nodal fields) is rebuilt by the next step.
+#include <cmath>
+#include <limits>
 #include <string>
 
 #include "core/Error.hpp"
@@ -25,20 +27,78 @@ void putSet(CheckpointData& data, const std::string& prefix, Set& set) {
     });
 }
 
+// A checkpoint is only ever what saveState wrote, unless the file is damaged or another case's:
+// the seal (io/Checkpoint.cpp) catches the first, these checks the second and anything the seal
+// cannot see. What a step would index with (sizes, integer codes, positions) is checked here,
+// before the first step; found by fuzzing (tests/fuzz/fuzz_checkpoint_state.cpp).
+const char* const kNotThisCase = ": the checkpoint is damaged or of another case";
+
 template <class Set>
-void getSet(const CheckpointData& data, const std::string& prefix, Set& set) {
+void getSet(const CheckpointData& data, const std::string& prefix, Set& set, int dimension) {
     int k = 0;
-    set.forEachField([&](auto& field, int) {
+    std::size_t points = 0;
+    set.forEachField([&](auto& field, int components) {
         using T = typename std::decay_t<decltype(field)>::value_type;
         const std::string name = prefix + "_field" + std::to_string(k++);
+        std::size_t size = 0;
         if constexpr (std::is_same_v<T, double>) {
             const auto& v = data.doubles(name);
+            for (std::size_t i = 0; i < v.size(); ++i)
+                QS_CHECK(std::isfinite(v[i]), "entry '" << name << "' value " << i << " is " << v[i] << kNotThisCase);
             field.assign(v.begin(), v.end());
+            size = v.size();
         } else {
             const auto& v = data.integers(name);
+            for (std::size_t i = 0; i < v.size(); ++i)
+                QS_CHECK(v[i] >= std::numeric_limits<int>::min() && v[i] <= std::numeric_limits<int>::max(),
+                         "entry '" << name << "' value " << i << " is " << v[i] << kNotThisCase);
             field.assign(v.begin(), v.end());
+            size = v.size();
         }
+        if (k == 1) points = size / static_cast<std::size_t>(dimension);  // the first field is x
+        QS_CHECK(size == points * static_cast<std::size_t>(components),
+                 "entry '" << name << "' holds " << size << " values, " << points << " " << prefix
+                           << " points need " << points * components << kNotThisCase);
     });
+}
+
+/// An integer code per point (a state, a material index) within [0, count).
+void requireCodes(const std::vector<int>& codes, int count, const char* what) {
+    for (std::size_t p = 0; p < codes.size(); ++p)
+        QS_CHECK(codes[p] >= 0 && codes[p] < count,
+                 "point " << p << " has " << what << " " << codes[p] << ", expected 0.." << count - 1 << kNotThisCase);
+}
+
+/// Every point strictly inside the grid's box, with positive mass and volume.
+template <int D, class Set>
+void requireInside(const Set& set, const Grid<D>& grid, const char* name) {
+    for (std::size_t p = 0; p < set.mass.size(); ++p) {
+        for (int d = 0; d < D; ++d) {
+            const double x = set.x[p * D + d], extent = grid.cells(d) * grid.h();
+            QS_CHECK(x >= 0 && x < extent, name << " point " << p << " at x" << d << " = " << x
+                                                << " m, outside the grid's [0, " << extent << ") m" << kNotThisCase);
+        }
+        QS_CHECK(set.mass[p] > 0 && set.volume[p] > 0,
+                 name << " point " << p << " has mass " << set.mass[p] << " kg and volume " << set.volume[p]
+                      << " m3, both must be > 0" << kNotThisCase);
+    }
+}
+
+/// A scalar entry that the solver uses as a whole number (a count, a dimension).
+double wholeNumber(const CheckpointData& data, const char* name, double largest) {
+    const double v = data.scalar(name);
+    QS_CHECK(std::isfinite(v) && v >= 0 && v <= largest && v == std::floor(v),
+             "entry '" << name << "' is " << v << ", expected a whole number in [0, " << largest << "]" << kNotThisCase);
+    return v;
+}
+
+const std::vector<double>& finiteValues(const CheckpointData& data, const char* name, std::size_t size) {
+    const auto& v = data.doubles(name);
+    QS_CHECK(size == 0 || v.size() == size,
+             "entry '" << name << "' holds " << v.size() << " values, expected " << size << kNotThisCase);
+    for (std::size_t i = 0; i < v.size(); ++i)
+        QS_CHECK(std::isfinite(v[i]), "entry '" << name << "' value " << i << " is " << v[i] << kNotThisCase);
+    return v;
 }
 
 }  // namespace
@@ -62,25 +122,34 @@ void DoublePointSolver<D>::saveState(CheckpointData& data) const {
 
 template <int D>
 void DoublePointSolver<D>::loadState(const CheckpointData& data) {
-    QS_CHECK(static_cast<int>(data.scalar("dimension")) == D,
-             "the checkpoint is of a " << data.scalar("dimension") << "D run, the case is " << D << "D");
+    const double dimension = wholeNumber(data, "dimension", 3);
+    QS_CHECK(static_cast<int>(dimension) == D, "the checkpoint is of a " << dimension << "D run, the case is " << D << "D");
     time_ = data.scalar("time");
-    steps_ = static_cast<long>(data.scalar("steps"));
+    QS_CHECK(std::isfinite(time_) && time_ >= 0, "entry 'time' is " << time_ << kNotThisCase);
+    steps_ = static_cast<long>(wholeNumber(data, "steps", 9007199254740992.0));  // 2^53: exact in a double
     QS_CHECK(std::abs(data.scalar("dt") - dt_) <= 1e-12 * dt_,
              "the checkpoint was written with dt = " << data.scalar("dt") << " s, the case now gives "
                                                      << dt_ << " s: grid or material data changed");
-    getSet(data, "solid", solid_);
-    getSet(data, "liquid", liquid_);
-    const auto& rs = data.doubles("rel_speed");
+    getSet(data, "solid", solid_, D);
+    getSet(data, "liquid", liquid_, D);
+    requireCodes(solid_.state, 2, "solid state");
+    requireCodes(solid_.material, static_cast<int>(materials_.size()), "material");
+    requireCodes(liquid_.state, 2, "liquid state");
+    requireInside(solid_, grid_, "solid");
+    requireInside(liquid_, grid_, "liquid");
+    for (std::size_t p = 0; p < solid_.porosity.size(); ++p)
+        QS_CHECK(solid_.porosity[p] > 0 && solid_.porosity[p] < 1,
+                 "solid point " << p << " has porosity " << solid_.porosity[p] << ", outside (0, 1)" << kNotThisCase);
+    const auto& rs = finiteValues(data, "rel_speed", 0);
     QS_CHECK(rs.size() == relSpeed_.size(), "the checkpoint's grid differs from the case's grid");
     relSpeed_ = rs;
-    const auto& gaps = data.doubles("gap");
+    const auto& gaps = finiteValues(data, "gap", 0);
     QS_CHECK(gaps.size() == chamber_.gaps().size(),
              "the checkpoint's chamber has " << gaps.size() << " injection slots, the case's " << chamber_.gaps().size()
                                              << ": written by another version of quicksand or for another grid");
     chamber_.gaps() = gaps;
-    reservoir_.restoreState(data.doubles("reservoir"));
-    const auto& l = data.doubles("ledger");
+    reservoir_.restoreState(finiteValues(data, "reservoir", 0));
+    const auto& l = finiteValues(data, "ledger", 7);
     cumulativeInflow_ = l.at(0);
     chamber_.setInjectedVolume(l.at(1));
     outflowVolume_ = l.at(2);
@@ -89,6 +158,7 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     gateFlux_ = l.at(5);
     gatePressure_ = l.at(6);
     gateLaw_ = reservoir_.gateLaw(time_);
+    checkHealth();  // a state that loads must be one a step can take (a cell per step at most, ...)
 }
 
 template void DoublePointSolver<1>::saveState(CheckpointData&) const;

@@ -97,7 +97,7 @@ if(NOT EXISTS "${dir}/output")
   file(MAKE_DIRECTORY "${dir}/output")
   file(WRITE "${dir}/output/series.csv" "earlier results\n")
 endif()
-file(GLOB earlier "${dir}/output/*")
+file(GLOB_RECURSE earlier "${dir}/output/*")  # files only, also those in output/fields/
 set(before "")
 foreach(f IN LISTS earlier)
   file(SHA256 "${f}" h)

@@ -8,10 +8,14 @@
 #include <sstream>
 
 #include "io/CaseLoader.hpp"
+#include "io/Checkpoint.hpp"
+#include "reservoir/ReservoirModel.hpp"
 #include "solver/Interruption.hpp"
 #include "solver/Run.hpp"
 
+#include <cmath>
 #include <csignal>
+#include <limits>
 
 using namespace qs;
 namespace fs = std::filesystem;
@@ -128,4 +132,45 @@ TEST(Resume, AnInterruptedRunCheckpointsAndResumesBitIdentically) {
     const auto lb = lines(dir / "output/series.csv");
     ASSERT_EQ(la.size(), lb.size());
     for (std::size_t k = 0; k < la.size(); ++k) EXPECT_EQ(la[k], lb[k]) << "line " << k + 1;
+}
+
+// A checkpoint whose entries are not what saveState wrote (another case's, or damaged past the
+// seal) is refused before the first step, naming the entry or point; fuzzing found a position of
+// -inf reaching undefined behaviour in the first step (tests/fuzz/fuzz_checkpoint_state.cpp).
+TEST(Resume, ACheckpointThatNoStepCouldTakeIsRefusedNamingWhy) {
+    const CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/geostatic");
+    const auto reservoir = makeReservoirModel(c);
+    DoublePointSolver<1> solver(c, *reservoir);
+    solver.runGravityStage();
+    CheckpointData good;
+    solver.saveState(good);
+    auto refusal = [&](const std::string& entry, std::size_t index, double value) {
+        CheckpointData bad = good;
+        std::vector<double> v = bad.doubles(entry);
+        v.at(index) = value;
+        bad.put(entry, v);
+        const auto freshReservoir = makeReservoirModel(c);
+        DoublePointSolver<1> fresh(c, *freshReservoir);
+        try {
+            fresh.loadState(bad);
+        } catch (const Error& e) {
+            return std::string(e.what());
+        }
+        return std::string("accepted");
+    };
+    const double inf = std::numeric_limits<double>::infinity();
+    EXPECT_NE(refusal("solid_field0", 3, -inf).find("'solid_field0' value 3 is -inf"), std::string::npos);
+    EXPECT_NE(refusal("solid_field0", 3, -0.01).find("solid point 3 at x0 = -0.01 m, outside the grid"),
+              std::string::npos);
+    EXPECT_NE(refusal("liquid_field1", 0, 1e3).find("liquid point 0"), std::string::npos);  // faster than a cell per step
+    EXPECT_NE(refusal("solid_field4", 2, 1.5).find("solid point 2 has porosity 1.5"), std::string::npos);
+    EXPECT_NE(refusal("ledger", 1, std::nan("")).find("'ledger' value 1 is nan"), std::string::npos);
+    CheckpointData shortLedger = good;
+    shortLedger.put("ledger", std::vector<double>{1.0});
+    const auto other = makeReservoirModel(c);
+    DoublePointSolver<1> fresh(c, *other);
+    EXPECT_THROW(fresh.loadState(shortLedger), Error);
+    const auto third = makeReservoirModel(c);
+    DoublePointSolver<1> again(c, *third);
+    EXPECT_NO_THROW(again.loadState(good));
 }

@@ -11,6 +11,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <string>
 #include <vector>
@@ -121,7 +122,58 @@ TEST_F(CheckpointTest, UnreadableFileThrowsNamingIt) {
     big.put("values", std::vector<double>(100000, 1.0));
     qs::writeCheckpoint(path_, big);
     fs::resize_file(path_, fs::file_size(path_) / 2);
-    EXPECT_TRUE(contains(errorOf([&] { qs::readCheckpoint(path_); }), path_));
+    const std::string truncated = errorOf([&] { qs::readCheckpoint(path_); });
+    EXPECT_TRUE(contains(truncated, path_));
+    EXPECT_TRUE(contains(truncated, "truncated")) << truncated;
+    fs::resize_file(path_, 100);
+    EXPECT_TRUE(contains(errorOf([&] { qs::readCheckpoint(path_); }), "shorter than its 512-byte seal"));
+}
+
+/// Reads a whole file as bytes.
+std::string readBytes(const std::string& path) {
+    std::ifstream in(path, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+void writeBytes(const std::string& path, const std::string& bytes) {
+    std::ofstream(path, std::ios::binary | std::ios::trunc) << bytes;
+}
+
+TEST_F(CheckpointTest, AChangedByteAnywhereIsRefusedBeforeHdf5ReadsTheFile) {
+    // HDF5 crashes on some damaged files (tests/fuzz/regressions/fuzz_checkpoint): the seal must
+    // refuse every damaged checkpoint before HDF5 parses it.
+    qs::CheckpointData data;
+    data.put("values", std::vector<double>(300, 2.5));
+    data.put("counts", std::vector<std::int64_t>{1, 2, 3});
+    data.putScalar("time", 1.0);
+    qs::writeCheckpoint(path_, data);
+    const std::string good = readBytes(path_);
+    ASSERT_GT(good.size(), 1024u);
+    EXPECT_EQ(good.compare(0, 21, "quicksand-checkpoint\n"), 0);
+    int refused = 0, tried = 0;
+    for (std::size_t at = 0; at < good.size(); at += 37) {
+        std::string bad = good;
+        bad[at] = static_cast<char>(bad[at] ^ 0x5a);
+        writeBytes(path_, bad);
+        const std::string message = errorOf([&] { qs::readCheckpoint(path_); });
+        ++tried;
+        if (contains(message, "CRC-32") || contains(message, "seal") || contains(message, "not an HDF5 file")) ++refused;
+        else ADD_FAILURE() << "byte " << at << ": " << (message.empty() ? "accepted" : message);
+    }
+    EXPECT_EQ(refused, tried);
+    writeBytes(path_, good);
+    EXPECT_EQ(qs::readCheckpoint(path_).doubles("values"), std::vector<double>(300, 2.5));
+}
+
+TEST_F(CheckpointTest, TheInputsThatCrashedHdf5AreRefused) {
+    const std::string dir = std::string(QUICKSAND_SOURCE_DIR) + "/tests/fuzz/regressions/fuzz_checkpoint";
+    int inputs = 0;
+    for (const auto& entry : fs::directory_iterator(dir)) {
+        ++inputs;
+        const std::string message = errorOf([&] { qs::readCheckpoint(entry.path().string()); });
+        EXPECT_TRUE(contains(message, entry.path().string())) << message;
+    }
+    EXPECT_GE(inputs, 1);
 }
 
 TEST_F(CheckpointTest, WriteReplacesAtomicallyAndLeavesNoTemporary) {
