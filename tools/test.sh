@@ -5,7 +5,9 @@
 #   bash tools/test.sh -L verification  extra arguments go to ctest (here: one label only)
 #
 # Without arguments it then builds a second tree with AddressSanitizer and UBSan (build-sanitize)
-# and runs the fast labels (unit, hostile, resume, cli) there too (QUICKSAND_SANITIZE=0 skips it).
+# and runs the fast labels (unit, hostile, resume, cli) there too (QUICKSAND_SANITIZE=0 skips it),
+# and a third with clang and libFuzzer (build-fuzz) whose three fuzzers run 60 s each
+# (tests/fuzz; QUICKSAND_FUZZ=0 skips it, QUICKSAND_FUZZ_SECONDS sets the time).
 #
 # Ends with CTest's summary line ("100% tests passed, 0 tests failed out of N") and exits with
 # CTest's exit code. A selection that matches no test is an error, not a silent pass.
@@ -42,6 +44,25 @@ if [[ $# -eq 0 && "${QUICKSAND_SANITIZE:-1}" != 0 ]]; then
     set -e
     rm -f "$asan_log"
     [[ $asan_rc -eq 0 ]] || rc=$asan_rc
+fi
+
+# libFuzzer on the case loader, the checkpoint file and the checkpoint's state (tests/fuzz/README.md)
+if [[ $# -eq 0 && "${QUICKSAND_FUZZ:-1}" != 0 ]]; then
+    bash tools/setup.sh --fuzz >/dev/null
+    fuzz_dir="${build_dir}-fuzz"
+    CC=clang CXX=clang++ cmake -S . -B "$fuzz_dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQUICKSAND_FUZZ=ON \
+        -DQUICKSAND_FUZZ_SECONDS="${QUICKSAND_FUZZ_SECONDS:-60}" -DQUICKSAND_BUILD_TESTS=OFF \
+        -DQUICKSAND_WITH_OPENFOAM=OFF -DQUICKSAND_BUILD_BENCHMARKS=OFF >/dev/null
+    cmake --build "$fuzz_dir" -j2 --target fuzz_case_loader fuzz_checkpoint fuzz_checkpoint_state quicksand >/dev/null
+    set +e
+    ctest --test-dir "$fuzz_dir" --output-on-failure --no-tests=error -j2 -L fuzz -V 2>&1 \
+        | grep -E '(: stat::|\*\*\*|found a defect|[0-9]+% tests passed)' | sed 's/^[0-9]*: //; s/^/fuzz: /'
+    fuzz_rc=${PIPESTATUS[0]}
+    set -e
+    [[ $fuzz_rc -eq 0 ]] || rc=$fuzz_rc
+fi
+
+if [[ $# -eq 0 ]]; then
     # ctest's summary line of the whole suite, last, for CI
     grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -1
 fi
