@@ -6,6 +6,7 @@
 #include <hdf5.h>
 #include <zlib.h>
 
+#include <charconv>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
@@ -212,8 +213,8 @@ void requireIntactSeal(const std::string& path) {
     static const char hdf5Signature[8] = {'\x89', 'H', 'D', 'F', '\r', '\n', '\x1a', '\n'};
     const std::string cannot = path + ": cannot read checkpoint: ";
     std::ifstream in(path, std::ios::binary);
-    char seal[kSealBytes] = {};
-    in.read(seal, sizeof seal);
+    char seal[kSealBytes + 1] = {};  // one more: the text is always terminated
+    in.read(seal, kSealBytes);
     const std::size_t got = static_cast<std::size_t>(in.gcount());
     if (std::strncmp(seal, kSealMagic, std::strlen(kSealMagic)) != 0) {
         if (got >= sizeof hdf5Signature && std::memcmp(seal, hdf5Signature, sizeof hdf5Signature) == 0)
@@ -222,16 +223,23 @@ void requireIntactSeal(const std::string& path) {
                         std::to_string(kVersion) + ")");
         throw Error(cannot + "not an HDF5 file");
     }
-    if (got < sizeof seal)
+    if (got < kSealBytes)
         throw Error(cannot + "truncated: " + std::to_string(got) + " bytes, shorter than its " +
                     std::to_string(kSealBytes) + "-byte seal");
     // Every byte of the seal counts: it must be exactly what sealFile writes for the values it names.
     unsigned long long bytes = 0;
     unsigned crc = 0;
+    const char* text = seal + std::strlen(kSealMagic);
+    const char* const end = seal + kSealBytes;
+    bool parsed = std::strncmp(text, "bytes ", 6) == 0;
+    if (parsed) {
+        const auto b = std::from_chars(text + 6, end, bytes);  // defined on overflow, unlike sscanf
+        parsed = b.ec == std::errc() && end - b.ptr > 7 && std::strncmp(b.ptr, "\ncrc32 ", 7) == 0;
+        if (parsed) parsed = std::from_chars(b.ptr + 7, end, crc, 16).ec == std::errc();
+    }
     char expected[kSealBytes] = {};
-    const bool parsed = std::sscanf(seal + std::strlen(kSealMagic), "bytes %llu\ncrc32 %8x\n", &bytes, &crc) == 2;
     if (parsed) std::snprintf(expected, sizeof expected, "%sbytes %llu\ncrc32 %08x\n", kSealMagic, bytes, crc);
-    if (!parsed || std::memcmp(seal, expected, sizeof seal) != 0)
+    if (!parsed || std::memcmp(seal, expected, kSealBytes) != 0)
         throw Error(cannot + "its seal (the first " + std::to_string(kSealBytes) + " bytes) is damaged");
     in.clear();
     const auto [actualCrc, actualBytes] = payloadChecksum(in, path);

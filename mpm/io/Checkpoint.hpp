@@ -14,9 +14,10 @@
 // What the entries mean (and their units) is the writer's business: this is only a typed
 // key-value store. A '/' in a name makes HDF5 groups, so `h5ls -r` shows the state tidily.
 //
-// File layout: root attributes format = "quicksand-checkpoint" and version = 1; each entry a
-// dataset at its name: doubles as float64 [n], integers as int64 [n], scalars as a float64
-// scalar dataspace. Reading requires the format attribute, so a random HDF5 file is rejected.
+// File layout: a 512-byte seal (HDF5 user block: magic, byte count and CRC-32 of the rest,
+// checked before HDF5 reads anything; see Checkpoint.cpp), root attributes format =
+// "quicksand-checkpoint" and version = 2; each entry a dataset at its name: doubles as float64
+// [n], integers as int64 [n], scalars as a float64 scalar dataspace.
 #include <cstdint>
 #include <map>
 #include <string>

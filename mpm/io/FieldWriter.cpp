@@ -71,6 +71,16 @@ const char* xdmfAttributeType(StoredKind kind) {
     return "Scalar";
 }
 
+/// step_NNNNNN.h5 or step_NNNNNN.h5.tmp: the only files a new or resumed series removes.
+bool isStepFileName(const std::string& name) {
+    const std::string stem = name.size() > 4 && name.compare(name.size() - 4, 4, ".tmp") == 0
+                                 ? name.substr(0, name.size() - 4) : name;
+    if (stem.size() != 14 || stem.compare(0, 5, "step_") != 0 || stem.compare(11, 3, ".h5") != 0) return false;
+    for (int k = 5; k < 11; ++k)
+        if (stem[k] < '0' || stem[k] > '9') return false;
+    return true;
+}
+
 /// Group (or file) creation properties that keep the links in the order they were made, so that
 /// a resumed run reads a step's sets and fields back in the order they were written.
 Hdf5Handle creationOrdered(hid_t propertyClass) {
@@ -259,9 +269,7 @@ void FieldWriter::Impl::writeXdmf() const {
             throw Error(temporary + ": cannot write" + reason + "; " + xdmfPath + " is left as it was");
         }
     }
-    std::error_code error;
-    std::filesystem::rename(temporary, xdmfPath, error);
-    if (error) throw Error(xdmfPath + ": cannot replace with " + temporary + ": " + error.message());
+    publishFile(temporary, xdmfPath);
 }
 
 bool FieldWriter::Impl::readStep(const std::string& group, double keepBefore, StepRecord& step) const {
@@ -340,23 +348,21 @@ FieldWriter::FieldWriter(const std::string& directory, int dimension, double kee
     if (error) throw Error(s.stepDirectory.string() + ": cannot create directory: " + error.message());
     for (Impl::StepRecord step; s.readStep(stepGroupName(static_cast<int>(s.steps.size())), keepStepsBefore, step);)
         s.steps.push_back(std::move(step));
+    // The new index first: a crash from here on finds fields.h5 naming only files that exist.
+    s.writeIndex();
+    s.writeXdmf();
     for (const auto& entry : std::filesystem::directory_iterator(s.stepDirectory, error)) {
         const std::string name = entry.path().filename().string();
         bool kept = false;
         for (const Impl::StepRecord& step : s.steps) kept = kept || name == step.group + ".h5";
-        if (!kept) std::filesystem::remove_all(entry.path(), error);
+        if (!kept && isStepFileName(name)) std::filesystem::remove(entry.path(), error);
     }
-    s.writeIndex();
-    s.writeXdmf();
 }
 
 FieldWriter::~FieldWriter() {
     if (!impl_) return;
-    try {
-        if (impl_->stepOpen) endStep();
-    } catch (...) {
-        // A destructor must not throw; the last complete step stays readable.
-    }
+    // A step still open here was left by an exception part way through it: abandon it rather
+    // than publish half a step. The series stays as after the last endStep().
     impl_->stepGroup.close();
     impl_->stepFile.close();
     std::error_code ignored;
@@ -378,10 +384,19 @@ void FieldWriter::beginStep(double time) {
         H5Fclose);
     if (!s.stepFile.valid())
         fail(s.stepTemporary, "create the file of the step at t = " + formatDouble(time) + " s");
-    s.stepGroup = Hdf5Handle(H5Gopen2(s.stepFile.get(), "/", H5P_DEFAULT), H5Gclose);
-    if (!s.stepGroup.valid()) fail(s.stepTemporary, "open group /");
-    s.writeDimensionAttribute(s.stepFile.get(), s.stepTemporary);
-    s.writeDoubleAttribute(s.stepGroup.get(), "/", "time", time);
+    try {
+        s.stepGroup = Hdf5Handle(H5Gopen2(s.stepFile.get(), "/", H5P_DEFAULT), H5Gclose);
+        if (!s.stepGroup.valid()) fail(s.stepTemporary, "open group /");
+        s.writeDimensionAttribute(s.stepFile.get(), s.stepTemporary);
+        s.writeDoubleAttribute(s.stepGroup.get(), "/", "time", time);
+    } catch (...) {
+        s.stepGroup.close();
+        s.stepFile.close();
+        std::error_code ignored;
+        std::filesystem::remove(s.stepTemporary, ignored);
+        s.stepTemporary.clear();
+        throw;
+    }
     s.steps.push_back({time, group, {}});
     s.stepOpen = true;
 }

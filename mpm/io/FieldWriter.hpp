@@ -70,7 +70,8 @@ public:
     /// order (a resumed run passes its first new output time); all other step files are removed.
     /// The default keeps none: a new series. dimension = 1..3.
     explicit FieldWriter(const std::string& directory, int dimension, double keepStepsBefore = -1e300);
-    /// Finishes an open step (as endStep() would, errors swallowed) and closes the file.
+    /// Abandons a step still open (left by an exception): its temporary is removed, the series
+    /// stays as after the last endStep().
     ~FieldWriter();
 
     FieldWriter(const FieldWriter&) = delete;
@@ -84,8 +85,10 @@ public:
     /// arrays may change after the call.
     void writePointSet(const std::string& setName, std::size_t count, const double* positions,
                        const std::vector<PointField>& fields);
-    /// Publishes the step's file, then fields.h5 and fields.xdmf (each by rename). If it throws,
-    /// the step is dropped and the files are as after the previous step. Pre: a step is open.
+    /// Publishes the step's file, then fields.h5 and fields.xdmf (each by rename). If publishing
+    /// the step's file fails, the step is dropped and the files are as after the previous step;
+    /// if only the index or the XDMF fails, the step's file is in place but not yet listed (the
+    /// next endStep lists it). Pre: a step is open.
     void endStep();
 
     const std::string& hdf5Path() const { return hdf5Path_; }

@@ -35,7 +35,20 @@ void publishFile(const std::string& temporary, const std::string& path) {
     syncToDisk(temporary);
     std::error_code error;
     std::filesystem::rename(temporary, path, error);  // atomic on POSIX within one file system
-    if (error) throw Error(path + ": cannot replace with " + temporary + ": " + error.message());
+    if (error) {
+        std::error_code ignored;
+        std::filesystem::remove(temporary, ignored);
+        throw Error(path + ": cannot replace with " + temporary + ": " + error.message());
+    }
+    // The rename lives in the directory: sync it too, so that after a power loss a file that
+    // names this one (fields.h5 names the step files) never survives while this rename is lost.
+    std::string directory = std::filesystem::path(path).parent_path().string();
+    if (directory.empty()) directory = ".";
+    const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY);
+    if (fd >= 0) {
+        ::fsync(fd);  // best effort: some file systems refuse to sync a directory
+        ::close(fd);
+    }
 }
 
 }  // namespace qs

@@ -57,7 +57,8 @@ std::string hdf5Reason();
 /// if the machine (not only the program) stops. Throws qs::Error naming the file.
 void syncToDisk(const std::string& path);
 
-/// Forces `temporary` to disk and renames it over `path`. Throws qs::Error naming both.
+/// Forces `temporary` to disk, renames it over `path` and syncs the directory. Throws qs::Error
+/// naming both (and removes `temporary`) if the rename fails.
 void publishFile(const std::string& temporary, const std::string& path);
 
 }  // namespace qs

@@ -69,14 +69,15 @@ void requireCodes(const std::vector<int>& codes, int count, const char* what) {
                  "point " << p << " has " << what << " " << codes[p] << ", expected 0.." << count - 1 << kNotThisCase);
 }
 
-/// Every point strictly inside the grid's box, with positive mass and volume.
+/// Every point inside the grid's box (walls included: gridToPoints clamps onto them), with
+/// positive mass and volume.
 template <int D, class Set>
 void requireInside(const Set& set, const Grid<D>& grid, const char* name) {
     for (std::size_t p = 0; p < set.mass.size(); ++p) {
         for (int d = 0; d < D; ++d) {
             const double x = set.x[p * D + d], extent = grid.cells(d) * grid.h();
-            QS_CHECK(x >= 0 && x < extent, name << " point " << p << " at x" << d << " = " << x
-                                                << " m, outside the grid's [0, " << extent << ") m" << kNotThisCase);
+            QS_CHECK(x >= 0 && x <= extent, name << " point " << p << " at x" << d << " = " << x
+                                                 << " m, outside the grid's [0, " << extent << "] m" << kNotThisCase);
         }
         QS_CHECK(set.mass[p] > 0 && set.volume[p] > 0,
                  name << " point " << p << " has mass " << set.mass[p] << " kg and volume " << set.volume[p]

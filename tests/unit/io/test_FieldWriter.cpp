@@ -224,14 +224,22 @@ TEST_F(FieldWriterTest, EmptyPointSetHasEmptyDatasetsButNoXdmfGrid) {
     EXPECT_NE(xdmf.find("<Grid Name=\"solid\""), std::string::npos);
 }
 
-TEST_F(FieldWriterTest, DestructorFinishesAnOpenStep) {
+TEST_F(FieldWriterTest, DestructorAbandonsAnOpenStep) {
+    // A step still open at destruction was cut short by an exception: it must not be published.
     const std::vector<double> z = {0.1};
     {
         qs::FieldWriter writer(dir_.string(), 1);
+        writer.beginStep(1.0);
+        writer.writePointSet("solid", 1, z.data(), {});
+        writer.endStep();
         writer.beginStep(2.0);
         writer.writePointSet("solid", 1, z.data(), {});
     }
-    EXPECT_NE(readText(dir_ / "fields.xdmf").find("fields/step_000000.h5:/solid/positions"), std::string::npos);
+    const std::string xdmf = readText(dir_ / "fields.xdmf");
+    EXPECT_EQ(occurrences(xdmf, "<Time "), 1);
+    EXPECT_NE(xdmf.find("fields/step_000000.h5:/solid/positions"), std::string::npos);
+    EXPECT_FALSE(fs::exists(dir_ / "fields" / "step_000001.h5"));
+    EXPECT_FALSE(fs::exists(dir_ / "fields" / "step_000001.h5.tmp"));
 }
 
 TEST_F(FieldWriterTest, ConstructorTruncatesAPreviousRun) {
@@ -366,6 +374,7 @@ TEST_F(FieldWriterTest, AResumedSeriesKeepsTheStepsBeforeItsFirstNewOutput) {
     }
     const std::string before = readText(dir_ / "fields.xdmf");
     std::ofstream(dir_ / "fields" / "step_000009.h5.tmp") << "a crash's leftover";
+    std::ofstream(dir_ / "fields" / "notes.txt") << "a user's file, not ours to remove";
     {
         // Resumed at t = 0.6 s: its first new output is at 1.0 s, so 0, 0.5 stay and 1.0, 1.5 go.
         qs::FieldWriter writer(dir_.string(), 1, 1.0 - 1e-6);
@@ -379,7 +388,7 @@ TEST_F(FieldWriterTest, AResumedSeriesKeepsTheStepsBeforeItsFirstNewOutput) {
         writer.endStep();
     }
     EXPECT_EQ(filesIn(dir_ / "fields"),
-              (std::vector<std::string>{"step_000000.h5", "step_000001.h5", "step_000002.h5"}));
+              (std::vector<std::string>{"notes.txt", "step_000000.h5", "step_000001.h5", "step_000002.h5"}));
     const std::string after = readText(dir_ / "fields.xdmf");
     EXPECT_EQ(occurrences(after, "<Time "), 3);
     // The kept steps are indexed as they were written: same vector and tensor attributes.
