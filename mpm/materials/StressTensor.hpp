@@ -31,6 +31,13 @@ inline bool tensionCutoff(Real* s) {
             if (s[i] > 0) { s[i] = 0; cut = true; }
         return cut;
     }
+    // Plainly compressive, nothing to cut: -s positive definite (Sylvester: its leading minors
+    // all > 0). Most points of a loaded column are, and skip the eigen-solve. A state on the
+    // edge (a minor of 0) goes to the eigen-solve, as before.
+    const Real a = -s[0], b = -s[1], c = -s[2], yz = -s[3], xz = -s[4], xy = -s[5];
+    const Real minor2 = a * b - xy * xy;
+    const Real det = a * (b * c - yz * yz) - xy * (xy * c - yz * xz) + xz * (xy * yz - b * xz);
+    if (a > 0 && minor2 > 0 && det > 0) return false;
     Eigen::Matrix3d m;
     m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
     Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);
