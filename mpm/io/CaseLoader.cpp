@@ -1,6 +1,7 @@
 // The case format: the tables and keys of case.toml, and how each is read into CaseConfig. This
 // file is the schema, docs/case-format.md in code: it reads each key on its own (its type, its
 // range, whether it applies with the choices made elsewhere) with the toolkit of io/TomlSection.
+// The rules that relate the values of several keys are io/CaseRules, checked on the CaseConfig.
 #include "io/CaseLoader.hpp"
 
 #include <toml++/toml.h>
@@ -17,6 +18,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "io/CaseRules.hpp"
 #include "io/KeyLocations.hpp"
 #include "io/TomlSection.hpp"
 
@@ -122,30 +124,6 @@ const Options<ReservoirKind> kReservoirOptions = {{"constant_head", ReservoirKin
                                                   {"lumped", ReservoirKind::Lumped},
                                                   {"openfoam", ReservoirKind::OpenFoam}};
 
-/// Relative tolerance of the "whole number of cells" and level comparisons.
-constexpr double kGeometryTolerance = 1e-9;
-
-/// Throws unless `length` is a whole number (>= 1) of cells of size h (relative tolerance 1e-9).
-void requireWholeCells(const Section& s, std::string_view key, double length, double h) {
-    const double cells = length / h;
-    const double n = std::round(cells);
-    if (n >= 1.0 && std::abs(cells - n) <= kGeometryTolerance * cells) return;
-    const double below = std::floor(cells) * h, above = std::ceil(cells) * h;
-    s.fail(key, number(length) + " m is not a whole number of cells: with grid.cell_size = " +
-                    number(h) + " m it spans " + number(cells) +
-                    " cells; use a multiple of the cell size, e.g. " +
-                    (below > 0.0 ? number(below) + " m or " : "") + number(above) + " m");
-}
-
-/// True if a >= b up to the relative geometry tolerance (levels are sums of thicknesses).
-bool atLeast(double a, double b) {
-    return a >= b - kGeometryTolerance * std::max({1e-300, std::abs(a), std::abs(b)});
-}
-/// True if a > b by more than the relative geometry tolerance.
-bool above(double a, double b) {
-    return a > b + kGeometryTolerance * std::max({1e-300, std::abs(a), std::abs(b)});
-}
-
 /// A horizontal range written `key = [from, to]` (m), within the grid's width, from < to.
 std::optional<HorizontalRange> optionalRange(const Section& s, std::string_view key, double width,
                                              const std::string& hint) {
@@ -171,7 +149,8 @@ std::optional<HorizontalRange> optionalRange(const Section& s, std::string_view 
 // ------------------------------------------------------------------------------------------------
 // Loader: one function per section, in the order of docs/case-format.md. Each reads its keys on
 // their own; a bound one key sets for another's range (dilatancy_angle <= friction_angle, a
-// monitor below column.top) is part of that range.
+// monitor below column.top) is part of that range. The rules between the values of several keys
+// (io/CaseRules) are checked once the keys they relate are read.
 // ------------------------------------------------------------------------------------------------
 
 class Loader {
@@ -186,21 +165,22 @@ public:
         c_.gravity = root.optionalNumber("gravity", 9.81, nonNegative("m/s2"));
         readGrid(root);
         readLiquid(root);  // before the materials: their permeability check quotes mu and rho_L
-        // before the materials: a bed that starts fluidised may have n0 >= n_max
-        c_.initial.state = root.subsection("initial", kInitial, false)
-                               .choice("state", InitialState::Solid, kStateOptions);
         readMaterials(root);
         readLayers(root);
         readColumn(root);  // after the layers: the water level defaults to the sand top
+        // The geometry's rules before the keys whose ranges it sets (a monitor lies within
+        // [0, column.top]): a top below the water is reported as such, not as a monitor above it.
+        validateGeometry(c_, where_);
         readPoints(root);
         readLoads(root);
-        readInitial(root);  // after the loads: undrained_surcharge needs a surcharge
+        readInitial(root);
         readGate(root);
         readReservoir(root);  // after the gate: the reservoir matters only for a pressure gate
         readCoupling(root);
         readTime(root);
         readMonitors(root);
         readOutput(root);
+        validateInitialState(c_, where_);
         return c_;
     }
 
@@ -213,7 +193,6 @@ private:
         if (g.dimension >= 2) {
             g.width = s.requiredNumber("width", positive("m"),
                                        "horizontal extent of the grid, required in 2D and 3D");
-            requireWholeCells(s, "width", g.width, g.cellSize);
         } else {
             g.width = s.optionalNumber("width", 0.0, positive("m"), "ignored in 1D");
         }
@@ -290,23 +269,7 @@ private:
         m.porosity = s.requiredNumber("porosity", between(0, true, 1, true),
                                       "initial porosity n0, a fraction: 0.38, not 38");
         m.maxPorosity = s.optionalNumber("max_porosity", 0.41, between(0, true, 1, true));
-        if (!(m.maxPorosity > m.porosity) && c_.initial.state != InitialState::Fluidised) {
-            const bool given = s.has("max_porosity");
-            s.fail(given ? "max_porosity" : "porosity",
-                   "n0 = " + number(m.porosity) + " >= n_max = " + number(m.maxPorosity) +
-                       (given ? "" : " (the default)") +
-                       ": porosity must be below max_porosity, or the sand starts in the liquid "
-                       "state; lower porosity, set max_porosity in (porosity, 1), or start a "
-                       "fluidised bed with initial.state = \"fluidised\"");
-        }
         m.minPorosity = s.optionalNumber("min_porosity", 0.32, between(0, true, 1, true));
-        if (m.minPorosity > m.porosity) {
-            const bool given = s.has("min_porosity");
-            s.fail(given ? "min_porosity" : "porosity",
-                   "n_min = " + number(m.minPorosity) + (given ? "" : " (the default)") +
-                       " > n0 = " + number(m.porosity) +
-                       ": min_porosity must be in (0, porosity]; set min_porosity <= porosity");
-        }
         m.youngsModulus = s.optionalNumber("youngs_modulus", 1e6, positive("Pa"));
         m.poissonRatio = s.optionalNumber("poisson_ratio", 0.3, between(0, false, 0.5, true));
         if (m.model == ConstitutiveModelKind::MohrCoulomb) {
@@ -380,7 +343,6 @@ private:
                 s.fail("material", what);
             }
             layer.thickness = s.requiredNumber("thickness", positive("m"));
-            requireWholeCells(s, "thickness", layer.thickness, c_.grid.cellSize);
             readZones(s, names, layer);
             c_.layers.push_back(layer);
         }
@@ -390,6 +352,8 @@ private:
     void readZones(const Section& layer, const std::vector<std::string>& names, LayerConfig& out) {
         const toml::array* zones = layer.arrayOfTables("zones", false);
         if (!zones) return;
+        // A rule between keys, but it decides whether the zones are read at all (a 1D grid has no
+        // width to place them in), so it is the schema's, like a key that does not apply.
         if (c_.grid.dimension == 1)
             layer.fail("zones", "zones place materials side by side, which needs grid.dimension = 2 or 3 "
                                 "(a 1D column has one material per layer)");
@@ -415,45 +379,13 @@ private:
     void readColumn(const Section& root) {
         const Section s = root.subsection("column", kColumn, true);
         ColumnConfig& col = c_.column;
-        const double h = c_.grid.cellSize;
         col.chamberHeight = s.requiredNumber(
             "chamber_height", positive("m"),
             "height of the free-water chamber from the gate (z = 0) to the filter");
-        if (!atLeast(col.chamberHeight, h))
-            s.fail("chamber_height", "chamber_height = " + number(col.chamberHeight) +
-                                         " m is less than one cell (grid.cell_size = " + number(h) +
-                                         " m): the chamber needs at least one cell");
-        requireWholeCells(s, "chamber_height", col.chamberHeight, h);
-
-        const double sandTop = c_.sandTop();
-        const std::string sandTopText = "the sand top at " + number(sandTop) +
-                                        " m (chamber_height " + number(col.chamberHeight) +
-                                        " m + layers " + number(sandTop - col.chamberHeight) +
-                                        " m)";
-        col.waterLevel = s.optionalNumber("water_level", sandTop, anyValue("m"));
-        if (!atLeast(col.waterLevel, sandTop))
-            s.fail("water_level",
-                   "water_level = " + number(col.waterLevel) + " m is below " + sandTopText +
-                       "; the bed must start submerged: use water_level >= " + number(sandTop) +
-                       " m, or omit it (default: the sand top)");
+        col.waterLevel = s.optionalNumber("water_level", c_.sandTop(), anyValue("m"));
         col.overflowLevel = s.optionalNumber("overflow_level", anyValue("m"));
-        if (col.overflowLevel && !atLeast(*col.overflowLevel, col.waterLevel))
-            s.fail("overflow_level", "overflow_level = " + number(*col.overflowLevel) +
-                                         " m is below water_level = " + number(col.waterLevel) +
-                                         " m" +
-                                         (s.has("water_level") ? "" : " (the default: sand top)") +
-                                         "; expected overflow_level >= water_level");
         col.top = s.requiredNumber("top", positive("m"),
                                    "top of the grid, above water and overflow levels");
-        if (!above(col.top, col.waterLevel))
-            s.fail("top", "top = " + number(col.top) +
-                              " m is not above water_level = " + number(col.waterLevel) +
-                              " m; the grid must reach above the free surface");
-        if (col.overflowLevel && !above(col.top, *col.overflowLevel))
-            s.fail("top", "top = " + number(col.top) +
-                              " m is not above overflow_level = " + number(*col.overflowLevel) +
-                              " m; the grid must reach above the overflow");
-        requireWholeCells(s, "top", col.top, h);
     }
 
     void readPoints(const Section& root) {
@@ -471,6 +403,9 @@ private:
     void readInitial(const Section& root) {
         const Section s = root.subsection("initial", kInitial, false);
         InitialConfig& i = c_.initial;
+        i.state = s.choice("state", InitialState::Solid, kStateOptions);
+        // Which keys apply to a bed that starts fluidised: the schema's, as they decide what is
+        // read (the stress of a suspension is zero whatever the file says).
         if (i.state == InitialState::Fluidised) {
             // a suspension carries no effective stress: its weight rests on the pore water
             if (s.has("stress") && s.choice("stress", InitialStress::Zero, kStressOptions) != InitialStress::Zero)
@@ -488,24 +423,6 @@ private:
             between(-std::numeric_limits<double>::infinity(), false, std::numeric_limits<double>::infinity(), false, "m/s"),
             "upward filter velocity q0 of an initial steady seepage, m/s");
         i.undrainedSurcharge = s.boolean("undrained_surcharge", false);
-        if (i.undrainedSurcharge && !(c_.loads.surcharge > 0.0))
-            s.fail("undrained_surcharge",
-                   "undrained_surcharge = true needs a surcharge, but "
-                   "loads.surcharge is " +
-                       number(c_.loads.surcharge) +
-                       " Pa; set loads.surcharge > 0 or remove this key");
-        // Zones side by side start from a state built column by column: right at rest under
-        // hydrostatic water, not yet for the starts that need one flux per zone from a shared
-        // chamber and top (a seepage or fluidised start) or one undrained response
-        bool zones = false;
-        for (const LayerConfig& l : c_.layers) zones = zones || !l.zones.empty();
-        if (zones) {
-            const std::string why = "the layers have [[layers.zones]], whose initial state is built only at rest "
-                                    "so far (a start that needs one flux or undrained response per zone is not)";
-            if (i.filterVelocity != 0.0) s.fail("filter_velocity", "filter_velocity must be 0 here: " + why);
-            if (i.undrainedSurcharge) s.fail("undrained_surcharge", "undrained_surcharge must be false here: " + why);
-            if (i.state == InitialState::Fluidised) s.fail("state", "state must be \"solid\" here: " + why);
-        }
         i.gravityStageDuration = s.optionalNumber("gravity_stage_duration", 0.0, nonNegative("s"));
         i.gravityStageDamping =
             s.optionalNumber("gravity_stage_damping", 0.05, between(0, false, 1, true));
