@@ -19,7 +19,10 @@
 
 #include "core/Error.hpp"
 #include "io/CaseRules.hpp"
+#include "io/DidYouMean.hpp"
 #include "io/KeyLocations.hpp"
+#include "io/MessageText.hpp"
+#include "io/Range.hpp"
 #include "io/TomlSection.hpp"
 
 namespace qs {

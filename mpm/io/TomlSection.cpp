@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "io/DidYouMean.hpp"
 
 namespace qs {
 

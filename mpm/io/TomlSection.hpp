@@ -26,7 +26,6 @@
 #include <utility>
 #include <vector>
 
-#include "io/DidYouMean.hpp"
 #include "io/KeyLocations.hpp"
 #include "io/MessageText.hpp"
 #include "io/Range.hpp"
@@ -73,8 +72,9 @@ int lineOfNode(const toml::node& node);
 class Section {
 public:
     /// The top level of a parsed file. `format` lists every table of the file's format; `where`
-    /// names the file in messages and records every table and key read. Checks for unknown keys
-    /// at once, as every Section does.
+    /// names the file in messages and records every table and key read. Both, and the parsed
+    /// file, must outlive this Section and those made from it. Checks for unknown keys at once,
+    /// as every Section does.
     Section(const toml::table& root, const TableKeys& keys, const TableCatalogue& format, KeyLocations& where);
 
     const std::string& path() const { return path_; }
