@@ -7,6 +7,7 @@
 #include "physics/ClosedForms.hpp"
 #include "physics/Permeability.hpp"
 #include "solver/ColumnBuilder.hpp"
+#include "solver/RunPreconditions.hpp"
 #include "solver/RunSize.hpp"
 
 namespace qs {
@@ -61,10 +62,10 @@ void printRunSize(const CaseConfig& config, std::ostream& out) {
     if (r.wallSeconds > 86400)
         out << "note: over a day of wall time; grid.cell_size (now " << config.grid.cellSize
             << " m) sets both the step count and the point count\n";
-    requireFitsMachine(config, r, machine);
 }
 
 void printCheckReport(const CaseConfig& config, std::ostream& out) {
+    validateRun(config);  // what run refuses before its first step, check refuses too, saying the same
     const double g = config.gravity, rho = config.liquid.density, mu = config.liquid.viscosity;
     const double KL = config.liquid.bulkModulus, h = config.grid.cellSize;
     out << std::setprecision(4);
@@ -105,7 +106,6 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         out << "  consolidation coefficient c_v            "
             << (kappa / mu) / (1 / Eoed + n / KL) << " m2/s\n";
     }
-    requireStableTimeStep(config);  // what run refuses before its first step, check refuses too
     const double dtStable = config.time.courant * h / cMax;
     out << "time step: c_fast = " << cMax << " m/s, dt = courant h / c_fast = " << dtStable << " s ("
         << std::llround(config.time.end / (config.time.dt ? *config.time.dt : dtStable))

@@ -11,10 +11,12 @@ namespace qs {
 /// Zero when there is no outflow level or the gate is not pressure-driven.
 double expectedSteadyFilterVelocity(const CaseConfig& config);
 
+/// Throws qs::Error, before printing anything, for a case that `run` would refuse before its first
+/// step (validateRun, solver/RunPreconditions.hpp); else prints the report, ending "case OK".
 void printCheckReport(const CaseConfig& config, std::ostream& out);
 
-/// The run's size (cells, points, steps), estimated peak memory and wall time; throws qs::Error
-/// when the memory exceeds the machine's (solver/RunSize.hpp).
+/// The run's size (cells, points, steps), estimated peak memory and wall time
+/// (solver/RunSize.hpp).
 void printRunSize(const CaseConfig& config, std::ostream& out);
 
 }  // namespace qs

@@ -1,9 +1,10 @@
 #pragma once
 // CaseConfig: the validated content of a case directory's case.toml, as a plain struct.
 //
-// Only io/CaseLoader reads TOML; everything else sees this struct (the solver never reads a key
-// by name). Every field is SI; the key it comes from, its unit, default and allowed range are
-// documented in docs/case-format.md, which follows the order of this file.
+// Only io/CaseLoader (with its toolkit, io/TomlSection) reads TOML; everything else sees this
+// struct (the solver never reads a key by name). Every field is SI; the key it comes from, its
+// unit, default and allowed range are documented in docs/case-format.md, which follows the order
+// of this file.
 //
 // Geometry of a column (vertical axis z, elevations measured from the gate plane z = 0):
 //

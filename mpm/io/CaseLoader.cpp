@@ -1,9 +1,12 @@
+// The case format: the tables and keys of case.toml, and how each is read into CaseConfig. This
+// file is the schema, docs/case-format.md in code: it reads each key on its own (its type, its
+// range, whether it applies with the choices made elsewhere) with the toolkit of io/TomlSection.
+// The rules that relate the values of several keys are io/CaseRules, checked on the CaseConfig.
 #include "io/CaseLoader.hpp"
 
 #include <toml++/toml.h>
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -15,6 +18,12 @@
 #include <vector>
 
 #include "core/Error.hpp"
+#include "io/CaseRules.hpp"
+#include "io/DidYouMean.hpp"
+#include "io/KeyLocations.hpp"
+#include "io/MessageText.hpp"
+#include "io/Range.hpp"
+#include "io/TomlSection.hpp"
 
 namespace qs {
 namespace {
@@ -64,21 +73,6 @@ constexpr const char* kTimeKeys[] = {
 constexpr const char* kMonitorKeys[] = {"name", "elevation", "x", "y"};
 constexpr const char* kOutputKeys[] = {"directory", "fields", "progress_interval"};
 
-/// The accepted keys of one table; `title` is how messages name the table.
-struct TableKeys {
-    const char* title;
-    const char* const* first;
-    const char* const* last;
-    bool contains(std::string_view key) const {
-        return std::any_of(first, last, [&](const char* k) { return key == k; });
-    }
-};
-
-template <std::size_t N>
-constexpr TableKeys tableKeys(const char* title, const char* const (&keys)[N]) {
-    return {title, keys, keys + N};
-}
-
 const TableKeys kRoot = tableKeys("the top level", kRootKeys);
 const TableKeys kGrid = tableKeys("[grid]", kGridKeys);
 const TableKeys kColumn = tableKeys("[column]", kColumnKeys);
@@ -97,404 +91,20 @@ const TableKeys kTime = tableKeys("[time]", kTimeKeys);
 const TableKeys kMonitor = tableKeys("[[monitors]]", kMonitorKeys);
 const TableKeys kOutput = tableKeys("[output]", kOutputKeys);
 
-const TableKeys* const kAllTables[] = {&kRoot,  &kGrid,      &kColumn, &kMaterial, &kPermeability,
-                                       &kLayer, &kLiquid,    &kPoints, &kInitial,  &kLoads,
-                                       &kGate,  &kReservoir, &kCoupling, &kTime, &kMonitor,
-                                       &kOutput};
+const TableCatalogue kAllTables = {&kRoot,  &kGrid,      &kColumn,   &kMaterial, &kPermeability,
+                                   &kLayer, &kLiquid,    &kPoints,   &kInitial,  &kLoads,
+                                   &kGate,  &kReservoir, &kCoupling, &kTime,     &kMonitor,
+                                   &kOutput};
 
 /// Largest intrinsic permeability accepted (m2). Clean gravel is ~1e-7 m2; larger values are
 /// almost always a hydraulic conductivity in m/s typed where kappa in m2 belongs.
 constexpr double kMaxPermeability = 1e-6;
 /// Smallest viscosity accepted (Pa s); smaller values are a kPa s value (Anura3D's units).
 constexpr double kMinViscosity = 1e-6;
-/// Relative tolerance of the "whole number of cells" and level comparisons.
-constexpr double kGeometryTolerance = 1e-9;
-
-// ------------------------------------------------------------------------------------------------
-// Small text helpers
-// ------------------------------------------------------------------------------------------------
-
-std::string number(double v, int digits = 10) {
-    std::ostringstream s;
-    s.precision(digits);
-    s << v;
-    return s.str();
-}
-
-std::string inQuotes(std::string_view text) { return "\"" + std::string(text) + "\""; }
-
-std::string lower(std::string_view text) {
-    std::string out(text);
-    for (char& c : out) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-    return out;
-}
-
-/// Optimal-string-alignment distance (Levenshtein plus adjacent transpositions), case-insensitive.
-std::size_t editDistance(std::string_view a0, std::string_view b0) {
-    const std::string a = lower(a0), b = lower(b0);
-    const std::size_t n = a.size(), m = b.size();
-    std::vector<std::vector<std::size_t>> d(n + 1, std::vector<std::size_t>(m + 1));
-    for (std::size_t i = 0; i <= n; ++i) d[i][0] = i;
-    for (std::size_t j = 0; j <= m; ++j) d[0][j] = j;
-    for (std::size_t i = 1; i <= n; ++i) {
-        for (std::size_t j = 1; j <= m; ++j) {
-            const std::size_t cost = a[i - 1] == b[j - 1] ? 0 : 1;
-            d[i][j] = std::min({d[i - 1][j] + 1, d[i][j - 1] + 1, d[i - 1][j - 1] + cost});
-            if (i > 1 && j > 1 && a[i - 1] == b[j - 2] && a[i - 2] == b[j - 1])
-                d[i][j] = std::min(d[i][j], d[i - 2][j - 2] + 1);
-        }
-    }
-    return d[n][m];
-}
-
-/// The candidate nearest to `word`, if it is near enough to be a plausible typo.
-std::optional<std::string> nearest(std::string_view word,
-                                   const std::vector<std::string>& candidates) {
-    std::optional<std::string> best;
-    std::size_t bestDistance = std::numeric_limits<std::size_t>::max();
-    for (const std::string& c : candidates) {
-        const std::size_t d = editDistance(word, c);
-        if (d < bestDistance) {
-            bestDistance = d;
-            best = c;
-        }
-    }
-    const std::size_t limit = std::min<std::size_t>(3, std::max<std::size_t>(1, word.size() / 3));
-    if (best && bestDistance <= limit) return best;
-    return std::nullopt;
-}
-
-std::string joinQuoted(const std::vector<std::string>& items) {
-    std::string out;
-    for (std::size_t i = 0; i < items.size(); ++i) out += (i ? ", " : "") + inQuotes(items[i]);
-    return out;
-}
-
-/// "a string \"abc\"", "an integer 5", ...: how a value the user wrote is named in messages.
-std::string describe(const toml::node& node) {
-    switch (node.type()) {
-        case toml::node_type::string:
-            return "a string " + inQuotes(node.as_string()->get());
-        case toml::node_type::integer:
-            return "an integer " + std::to_string(node.as_integer()->get());
-        case toml::node_type::floating_point:
-            return "a float " + number(node.as_floating_point()->get());
-        case toml::node_type::boolean:
-            return std::string("a boolean ") + (node.as_boolean()->get() ? "true" : "false");
-        case toml::node_type::table:
-            return "a table";
-        case toml::node_type::array:
-            return "an array";
-        default:
-            return "a date/time value";
-    }
-}
-
-int lineOfNode(const toml::node& node) { return static_cast<int>(node.source().begin.line); }
-
-/// An allowed interval of a number, with its unit, for checking and for the message.
-struct Range {
-    double lo = -std::numeric_limits<double>::infinity();
-    double hi = std::numeric_limits<double>::infinity();
-    bool loOpen = false;
-    bool hiOpen = false;
-    std::string unit;  ///< "m", "Pa s", ... or empty for dimensionless
-
-    bool contains(double v) const {
-        return (loOpen ? v > lo : v >= lo) && (hiOpen ? v < hi : v <= hi);
-    }
-    std::string describe() const {
-        const bool hasLo = std::isfinite(lo), hasHi = std::isfinite(hi);
-        std::string text;
-        if (hasLo && hasHi)
-            text = std::string("in ") + (loOpen ? "(" : "[") + number(lo) + ", " + number(hi) +
-                   (hiOpen ? ")" : "]");
-        else if (hasLo)
-            text = (loOpen ? "> " : ">= ") + number(lo);
-        else if (hasHi)
-            text = (hiOpen ? "< " : "<= ") + number(hi);
-        else
-            text = "any finite number";
-        return text + (unit.empty() ? "" : " " + unit);
-    }
-};
-
-Range positive(std::string unit) {
-    return {0.0, std::numeric_limits<double>::infinity(), true, false, std::move(unit)};
-}
-Range nonNegative(std::string unit) {
-    return {0.0, std::numeric_limits<double>::infinity(), false, false, std::move(unit)};
-}
-Range anyValue(std::string unit) {
-    return {-std::numeric_limits<double>::infinity(), std::numeric_limits<double>::infinity(),
-            false, false, std::move(unit)};
-}
-Range between(double lo, bool loOpen, double hi, bool hiOpen, std::string unit = "") {
-    return {lo, hi, loOpen, hiOpen, std::move(unit)};
-}
-
-// ------------------------------------------------------------------------------------------------
-// Section: one TOML table being read, with its dotted path, for typed reads and messages.
-// ------------------------------------------------------------------------------------------------
-
-class Section {
-public:
-    /// `table` may be null (an optional table that is absent): every read then gives its default
-    /// and a required key is reported missing at `fallbackLine`. Checks for unknown keys at once.
-    Section(const std::string& file, const toml::table* table, std::string path,
-            const TableKeys& keys, int fallbackLine)
-        : file_(file), table_(table), path_(std::move(path)), keys_(keys), line_(fallbackLine) {
-        if (table_ && lineOfNode(*table_) > 0) line_ = lineOfNode(*table_);
-        if (table_) checkKeys();
-    }
-
-    const std::string& path() const { return path_; }
-    int line() const { return line_; }
-    bool present() const { return table_ != nullptr; }
-    const toml::table* table() const { return table_; }
-
-    std::string keyPath(std::string_view key) const {
-        return path_.empty() ? std::string(key) : path_ + "." + std::string(key);
-    }
-    const toml::node* find(std::string_view key) const {
-        QS_ASSERT(keys_.contains(key));
-        return table_ ? table_->get(key) : nullptr;
-    }
-    bool has(std::string_view key) const { return find(key) != nullptr; }
-    int lineOf(std::string_view key) const {
-        const toml::node* node = find(key);
-        return node && lineOfNode(*node) > 0 ? lineOfNode(*node) : line_;
-    }
-
-    /// Reports a problem with `key` (at its line if given, else at the table's line).
-    [[noreturn]] void fail(std::string_view key, const std::string& what) const {
-        throw InputError(file_, lineOf(key), keyPath(key), what);
-    }
-    /// Reports a problem with the table itself.
-    [[noreturn]] void failTable(const std::string& what) const {
-        throw InputError(file_, line_, path_, what);
-    }
-    [[noreturn]] void missing(std::string_view key, const std::string& expected) const {
-        fail(key, "missing required key '" + std::string(key) + "' in " + tableName() +
-                      " (expected " + expected + ")");
-    }
-    /// A key that is valid in this table but has no meaning with the choices made elsewhere.
-    void forbid(std::string_view key, const std::string& why) const {
-        if (has(key))
-            fail(key, "'" + std::string(key) + "' has no effect here: " + why + ". Remove it");
-    }
-
-    std::optional<double> optionalNumber(std::string_view key, const Range& range,
-                                         const std::string& hint = "") const {
-        const toml::node* node = find(key);
-        if (!node) return std::nullopt;
-        double v = 0.0;
-        if (const auto* i = node->as_integer())
-            v = static_cast<double>(i->get());
-        else if (const auto* f = node->as_floating_point())
-            v = f->get();
-        else {
-            std::string what =
-                "expected a number (" + range.describe() + "), got " + describe(*node);
-            if (const auto* s = node->as_string()) {
-                std::istringstream probe(s->get());
-                double x;
-                if (probe >> x && probe.eof()) what += "; write numbers without quotes";
-            }
-            fail(key, what);
-        }
-        if (!std::isfinite(v))
-            fail(key, "expected a finite number (" + range.describe() + "), got " + number(v));
-        if (!range.contains(v))
-            fail(key, "value " + number(v) + (range.unit.empty() ? "" : " " + range.unit) +
-                          " is out of range: expected a value " + range.describe() +
-                          (hint.empty() ? "" : " (" + hint + ")"));
-        return v;
-    }
-    double optionalNumber(std::string_view key, double fallback, const Range& range,
-                          const std::string& hint = "") const {
-        return optionalNumber(key, range, hint).value_or(fallback);
-    }
-    double requiredNumber(std::string_view key, const Range& range,
-                          const std::string& hint = "") const {
-        if (!has(key))
-            missing(key, "a number " + range.describe() + (hint.empty() ? "" : ", " + hint));
-        return *optionalNumber(key, range, hint);
-    }
-
-    /// A horizontal range written `key = [from, to]` (m), within [0, width], from < to.
-    std::optional<HorizontalRange> optionalRange(std::string_view key, double width,
-                                                 const std::string& hint) const {
-        const toml::node* node = find(key);
-        if (!node) return std::nullopt;
-        auto value = [](const toml::node* n, double& v) {
-            if (!n) return false;
-            if (const auto* i = n->as_integer()) { v = static_cast<double>(i->get()); return true; }
-            if (const auto* f = n->as_floating_point()) { v = f->get(); return true; }
-            return false;
-        };
-        HorizontalRange r;
-        const toml::array* a = node->as_array();
-        if (!a || a->size() != 2 || !value(a->get(0), r.from) || !value(a->get(1), r.to))
-            fail(key, "expected two numbers [from, to] in m (" + hint + "), got " + describe(*node));
-        const double tol = 1e-12 * width;
-        if (!std::isfinite(r.from) || !std::isfinite(r.to) || r.from < -tol || r.to > width + tol ||
-            !(r.from < r.to))
-            fail(key, "range [" + number(r.from) + ", " + number(r.to) + "] m is out of range: expected 0 <= from < to <= " +
-                          number(width) + " m, the grid's width (" + hint + ")");
-        return r;
-    }
-
-    int integer(std::string_view key, int fallback, const Range& range) const {
-        const toml::node* node = find(key);
-        if (!node) return fallback;
-        const auto* i = node->as_integer();
-        if (!i) fail(key, "expected an integer (" + range.describe() + "), got " + describe(*node));
-        const auto v = i->get();
-        if (!range.contains(static_cast<double>(v)) || v > std::numeric_limits<int>::max() ||
-            v < std::numeric_limits<int>::min())
-            fail(key, "value " + std::to_string(v) + " is out of range: expected an integer " +
-                          range.describe() +
-                          (std::isfinite(range.hi)
-                               ? ""
-                               : " and <= " + std::to_string(std::numeric_limits<int>::max())));
-        return static_cast<int>(v);
-    }
-
-    bool boolean(std::string_view key, bool fallback) const {
-        const toml::node* node = find(key);
-        if (!node) return fallback;
-        const auto* b = node->as_boolean();
-        if (!b)
-            fail(key, "expected a boolean (true or false, without quotes), got " + describe(*node));
-        return b->get();
-    }
-
-    std::optional<std::string> optionalString(std::string_view key, bool allowEmpty = false) const {
-        const toml::node* node = find(key);
-        if (!node) return std::nullopt;
-        const auto* s = node->as_string();
-        if (!s) fail(key, "expected a string (in quotes), got " + describe(*node));
-        if (!allowEmpty && s->get().empty()) fail(key, "expected a non-empty string, got \"\"");
-        return s->get();
-    }
-    std::string string(std::string_view key, const std::string& fallback,
-                       bool allowEmpty = false) const {
-        return optionalString(key, allowEmpty).value_or(fallback);
-    }
-    std::string requiredString(std::string_view key, const std::string& expected) const {
-        if (!has(key)) missing(key, expected);
-        return *optionalString(key);
-    }
-
-    /// A string naming one of `options`; unknown strings list the allowed ones.
-    template <class E>
-    E choice(std::string_view key, E fallback,
-             const std::vector<std::pair<std::string, E>>& options) const {
-        if (!has(key)) return fallback;
-        return requiredChoice(key, options);
-    }
-    template <class E>
-    E requiredChoice(std::string_view key,
-                     const std::vector<std::pair<std::string, E>>& options) const {
-        std::vector<std::string> names;
-        for (const auto& o : options) names.push_back(o.first);
-        if (!has(key)) missing(key, "one of " + joinQuoted(names));
-        const toml::node* node = find(key);
-        const auto* s = node->as_string();
-        if (!s) fail(key, "expected one of " + joinQuoted(names) + ", got " + describe(*node));
-        for (const auto& o : options)
-            if (s->get() == o.first) return o.second;
-        std::string what =
-            "unknown value " + inQuotes(s->get()) + "; allowed: " + joinQuoted(names);
-        if (auto guess = nearest(s->get(), names))
-            what += ". Did you mean " + inQuotes(*guess) + "?";
-        fail(key, what);
-    }
-
-    /// The sub-table under `key` (null table if absent and not required).
-    Section subsection(std::string_view key, const TableKeys& keys, bool required) const {
-        const toml::node* node = find(key);
-        if (!node) {
-            if (required) fail(key, "missing required table [" + keyPath(key) + "]");
-            return Section(file_, nullptr, keyPath(key), keys, line_);
-        }
-        const toml::table* t = node->as_table();
-        if (!t) fail(key, "expected a table [" + keyPath(key) + "], got " + describe(*node));
-        return Section(file_, t, keyPath(key), keys, line_);
-    }
-
-    /// The array of tables under `key` ([[key]] entries); null if absent and not required.
-    const toml::array* arrayOfTables(std::string_view key, bool required) const {
-        const toml::node* node = find(key);
-        if (!node) {
-            if (required)
-                fail(key, "missing required [[" + std::string(key) + "]] entries (at least one)");
-            return nullptr;
-        }
-        const toml::array* a = node->as_array();
-        if (!a)
-            fail(key, "expected an array of tables, one [[" + std::string(key) +
-                          "]] header per entry, got " + describe(*node));
-        for (std::size_t i = 0; i < a->size(); ++i) {
-            const toml::node& item = *a->get(i);
-            if (!item.is_table()) {
-                const int line = lineOfNode(item) > 0 ? lineOfNode(item) : lineOf(key);
-                throw InputError(file_, line, keyPath(key) + "[" + std::to_string(i) + "]",
-                                 "expected a table (write each entry as a [[" + std::string(key) +
-                                     "]] header followed by its keys), got " + describe(item));
-            }
-        }
-        if (required && a->empty())
-            fail(key, "expected at least one [[" + std::string(key) + "]] entry, got none");
-        return a;
-    }
-
-    std::string tableName() const { return path_.empty() ? "the top level" : "[" + path_ + "]"; }
-
-private:
-    void checkKeys() const {
-        for (const auto& [k, node] : *table_) {
-            const std::string_view key = k.str();
-            if (keys_.contains(key)) continue;
-            std::vector<std::string> candidates(keys_.first, keys_.last);
-            std::string what = "unknown key '" + std::string(key) + "' in " + tableName() + ".";
-            if (auto guess = nearest(key, candidates)) {
-                what = "unknown key '" + std::string(key) + "'. Did you mean '" + *guess + "'?";
-            } else {
-                std::string elsewhere;
-                for (const TableKeys* t : kAllTables)
-                    if (t != &keys_ && t->contains(key)) {
-                        elsewhere = t->title;
-                        break;
-                    }
-                if (!elsewhere.empty())
-                    what +=
-                        " '" + std::string(key) + "' belongs in " + elsewhere +
-                        (elsewhere == "the top level" ? " (before the first [table] header: a key "
-                                                        "after a header belongs to that table)"
-                                                      : "") +
-                        ".";
-                what += " Allowed keys: " + joinQuoted(candidates) + ".";
-            }
-            const int line = lineOfNode(node) > 0 ? lineOfNode(node) : line_;
-            throw InputError(file_, line, keyPath(key), what);
-        }
-    }
-
-    const std::string& file_;
-    const toml::table* table_;
-    std::string path_;
-    const TableKeys& keys_;
-    int line_;
-};
 
 // ------------------------------------------------------------------------------------------------
 // The strings each choice accepts (docs/case-format.md lists the same).
 // ------------------------------------------------------------------------------------------------
-
-template <class E>
-using Options = std::vector<std::pair<std::string, E>>;
 
 const Options<ShapeFunctionKind> kShapeFunctionOptions = {{"linear", ShapeFunctionKind::Linear},
                                                           {"gimp", ShapeFunctionKind::Gimp}};
@@ -517,65 +127,63 @@ const Options<ReservoirKind> kReservoirOptions = {{"constant_head", ReservoirKin
                                                   {"lumped", ReservoirKind::Lumped},
                                                   {"openfoam", ReservoirKind::OpenFoam}};
 
-template <class E>
-std::string nameOf(const Options<E>& options, E value) {
-    for (const auto& o : options)
-        if (o.second == value) return inQuotes(o.first);
-    return "?";
-}
-
-/// Throws unless `length` is a whole number (>= 1) of cells of size h (relative tolerance 1e-9).
-void requireWholeCells(const Section& s, std::string_view key, double length, double h) {
-    const double cells = length / h;
-    const double n = std::round(cells);
-    if (n >= 1.0 && std::abs(cells - n) <= kGeometryTolerance * cells) return;
-    const double below = std::floor(cells) * h, above = std::ceil(cells) * h;
-    s.fail(key, number(length) + " m is not a whole number of cells: with grid.cell_size = " +
-                    number(h) + " m it spans " + number(cells) +
-                    " cells; use a multiple of the cell size, e.g. " +
-                    (below > 0.0 ? number(below) + " m or " : "") + number(above) + " m");
-}
-
-/// True if a >= b up to the relative geometry tolerance (levels are sums of thicknesses).
-bool atLeast(double a, double b) {
-    return a >= b - kGeometryTolerance * std::max({1e-300, std::abs(a), std::abs(b)});
-}
-/// True if a > b by more than the relative geometry tolerance.
-bool above(double a, double b) {
-    return a > b + kGeometryTolerance * std::max({1e-300, std::abs(a), std::abs(b)});
+/// A horizontal range written `key = [from, to]` (m), within the grid's width, from < to.
+std::optional<HorizontalRange> optionalRange(const Section& s, std::string_view key, double width,
+                                             const std::string& hint) {
+    const toml::node* node = s.find(key);
+    if (!node) return std::nullopt;
+    auto value = [](const toml::node* n, double& v) {
+        if (!n) return false;
+        if (const auto* i = n->as_integer()) { v = static_cast<double>(i->get()); return true; }
+        if (const auto* f = n->as_floating_point()) { v = f->get(); return true; }
+        return false;
+    };
+    HorizontalRange r;
+    const toml::array* a = node->as_array();
+    if (!a || a->size() != 2 || !value(a->get(0), r.from) || !value(a->get(1), r.to))
+        s.fail(key, "expected two numbers [from, to] in m (" + hint + "), got " + describe(*node));
+    const double tol = 1e-12 * width;
+    if (!std::isfinite(r.from) || !std::isfinite(r.to) || r.from < -tol || r.to > width + tol || !(r.from < r.to))
+        s.fail(key, "range [" + number(r.from) + ", " + number(r.to) + "] m is out of range: expected 0 <= from < to <= " +
+                        number(width) + " m, the grid's width (" + hint + ")");
+    return r;
 }
 
 // ------------------------------------------------------------------------------------------------
-// Loader: one function per section, in the order of docs/case-format.md.
+// Loader: one function per section, in the order of docs/case-format.md. Each reads its keys on
+// their own; a bound one key sets for another's range (dilatancy_angle <= friction_angle, a
+// monitor below column.top) is part of that range. The rules between the values of several keys
+// (io/CaseRules) are checked once the keys they relate are read.
 // ------------------------------------------------------------------------------------------------
 
 class Loader {
 public:
-    Loader(std::string file, std::string caseDirectory)
-        : file_(std::move(file)), caseDirectory_(std::move(caseDirectory)) {}
+    Loader(KeyLocations& where, std::string caseDirectory)
+        : where_(where), caseDirectory_(std::move(caseDirectory)) {}
 
     CaseConfig load(const toml::table& rootTable) {
-        const Section root(file_, &rootTable, "", kRoot, 1);
+        const Section root(rootTable, kRoot, kAllTables, where_);
         c_.caseDirectory = caseDirectory_;
         c_.title = root.string("title", "", /*allowEmpty=*/true);
         c_.gravity = root.optionalNumber("gravity", 9.81, nonNegative("m/s2"));
         readGrid(root);
         readLiquid(root);  // before the materials: their permeability check quotes mu and rho_L
-        // before the materials: a bed that starts fluidised may have n0 >= n_max
-        c_.initial.state = root.subsection("initial", kInitial, false)
-                               .choice("state", InitialState::Solid, kStateOptions);
         readMaterials(root);
         readLayers(root);
         readColumn(root);  // after the layers: the water level defaults to the sand top
+        // The geometry's rules before the keys whose ranges it sets (a monitor lies within
+        // [0, column.top]): a top below the water is reported as such, not as a monitor above it.
+        validateGeometry(c_, where_);
         readPoints(root);
         readLoads(root);
-        readInitial(root);  // after the loads: undrained_surcharge needs a surcharge
+        readInitial(root);
         readGate(root);
         readReservoir(root);  // after the gate: the reservoir matters only for a pressure gate
         readCoupling(root);
         readTime(root);
         readMonitors(root);
         readOutput(root);
+        validateInitialState(c_, where_);
         return c_;
     }
 
@@ -588,7 +196,6 @@ private:
         if (g.dimension >= 2) {
             g.width = s.requiredNumber("width", positive("m"),
                                        "horizontal extent of the grid, required in 2D and 3D");
-            requireWholeCells(s, "width", g.width, g.cellSize);
         } else {
             g.width = s.optionalNumber("width", 0.0, positive("m"), "ignored in 1D");
         }
@@ -643,11 +250,11 @@ private:
             const std::string path = "materials." + name;
             if (!value->is_table())
                 throw InputError(
-                    file_, lineOfNode(*value) > 0 ? lineOfNode(*value) : root.lineOf("materials"),
+                    where_.file(), lineOfNode(*value) > 0 ? lineOfNode(*value) : root.lineOf("materials"),
                     path,
                     "expected a table [" + path + "] describing a material, got " +
                         describe(*value) + "; material keys go under a [materials.NAME] header");
-            const Section s(file_, value->as_table(), path, kMaterial, root.lineOf("materials"));
+            const Section s = root.child(*value->as_table(), path, kMaterial, root.lineOf("materials"));
             c_.materials.push_back(readMaterial(s, name));
         }
     }
@@ -665,23 +272,7 @@ private:
         m.porosity = s.requiredNumber("porosity", between(0, true, 1, true),
                                       "initial porosity n0, a fraction: 0.38, not 38");
         m.maxPorosity = s.optionalNumber("max_porosity", 0.41, between(0, true, 1, true));
-        if (!(m.maxPorosity > m.porosity) && c_.initial.state != InitialState::Fluidised) {
-            const bool given = s.has("max_porosity");
-            s.fail(given ? "max_porosity" : "porosity",
-                   "n0 = " + number(m.porosity) + " >= n_max = " + number(m.maxPorosity) +
-                       (given ? "" : " (the default)") +
-                       ": porosity must be below max_porosity, or the sand starts in the liquid "
-                       "state; lower porosity, set max_porosity in (porosity, 1), or start a "
-                       "fluidised bed with initial.state = \"fluidised\"");
-        }
         m.minPorosity = s.optionalNumber("min_porosity", 0.32, between(0, true, 1, true));
-        if (m.minPorosity > m.porosity) {
-            const bool given = s.has("min_porosity");
-            s.fail(given ? "min_porosity" : "porosity",
-                   "n_min = " + number(m.minPorosity) + (given ? "" : " (the default)") +
-                       " > n0 = " + number(m.porosity) +
-                       ": min_porosity must be in (0, porosity]; set min_porosity <= porosity");
-        }
         m.youngsModulus = s.optionalNumber("youngs_modulus", 1e6, positive("Pa"));
         m.poissonRatio = s.optionalNumber("poisson_ratio", 0.3, between(0, false, 0.5, true));
         if (m.model == ConstitutiveModelKind::MohrCoulomb) {
@@ -744,8 +335,7 @@ private:
         std::vector<std::string> names;
         for (const MaterialConfig& m : c_.materials) names.push_back(m.name);
         for (std::size_t i = 0; i < layers->size(); ++i) {
-            const Section s(file_, layers->get(i)->as_table(), "layers[" + std::to_string(i) + "]",
-                            kLayer, root.lineOf("layers"));
+            const Section s = root.entry("layers", i, kLayer);
             LayerConfig layer;
             layer.material = s.requiredString("material", "the NAME of a [materials.NAME] table");
             if (std::find(names.begin(), names.end(), layer.material) == names.end()) {
@@ -756,7 +346,6 @@ private:
                 s.fail("material", what);
             }
             layer.thickness = s.requiredNumber("thickness", positive("m"));
-            requireWholeCells(s, "thickness", layer.thickness, c_.grid.cellSize);
             readZones(s, names, layer);
             c_.layers.push_back(layer);
         }
@@ -766,12 +355,13 @@ private:
     void readZones(const Section& layer, const std::vector<std::string>& names, LayerConfig& out) {
         const toml::array* zones = layer.arrayOfTables("zones", false);
         if (!zones) return;
+        // A rule between keys, but it decides whether the zones are read at all (a 1D grid has no
+        // width to place them in), so it is the schema's, like a key that does not apply.
         if (c_.grid.dimension == 1)
             layer.fail("zones", "zones place materials side by side, which needs grid.dimension = 2 or 3 "
                                 "(a 1D column has one material per layer)");
         for (std::size_t i = 0; i < zones->size(); ++i) {
-            const Section s(file_, zones->get(i)->as_table(), layer.path() + ".zones[" + std::to_string(i) + "]",
-                            kZone, layer.lineOf("zones"));
+            const Section s = layer.entry("zones", i, kZone);
             ZoneConfig z;
             z.material = s.requiredString("material", "the NAME of a [materials.NAME] table");
             if (std::find(names.begin(), names.end(), z.material) == names.end()) {
@@ -782,8 +372,8 @@ private:
             }
             const std::string hint = "the zone's horizontal extent";
             if (!s.has("x")) s.missing("x", "[from, to] in m, " + hint);
-            z.x = *s.optionalRange("x", c_.grid.width, hint);
-            if (c_.grid.dimension == 3) z.y = s.optionalRange("y", c_.grid.width, hint + " along y");
+            z.x = *optionalRange(s, "x", c_.grid.width, hint);
+            if (c_.grid.dimension == 3) z.y = optionalRange(s, "y", c_.grid.width, hint + " along y");
             else s.forbid("y", "y applies only in 3D (grid.dimension = 3)");
             out.zones.push_back(z);
         }
@@ -792,45 +382,13 @@ private:
     void readColumn(const Section& root) {
         const Section s = root.subsection("column", kColumn, true);
         ColumnConfig& col = c_.column;
-        const double h = c_.grid.cellSize;
         col.chamberHeight = s.requiredNumber(
             "chamber_height", positive("m"),
             "height of the free-water chamber from the gate (z = 0) to the filter");
-        if (!atLeast(col.chamberHeight, h))
-            s.fail("chamber_height", "chamber_height = " + number(col.chamberHeight) +
-                                         " m is less than one cell (grid.cell_size = " + number(h) +
-                                         " m): the chamber needs at least one cell");
-        requireWholeCells(s, "chamber_height", col.chamberHeight, h);
-
-        const double sandTop = c_.sandTop();
-        const std::string sandTopText = "the sand top at " + number(sandTop) +
-                                        " m (chamber_height " + number(col.chamberHeight) +
-                                        " m + layers " + number(sandTop - col.chamberHeight) +
-                                        " m)";
-        col.waterLevel = s.optionalNumber("water_level", sandTop, anyValue("m"));
-        if (!atLeast(col.waterLevel, sandTop))
-            s.fail("water_level",
-                   "water_level = " + number(col.waterLevel) + " m is below " + sandTopText +
-                       "; the bed must start submerged: use water_level >= " + number(sandTop) +
-                       " m, or omit it (default: the sand top)");
+        col.waterLevel = s.optionalNumber("water_level", c_.sandTop(), anyValue("m"));
         col.overflowLevel = s.optionalNumber("overflow_level", anyValue("m"));
-        if (col.overflowLevel && !atLeast(*col.overflowLevel, col.waterLevel))
-            s.fail("overflow_level", "overflow_level = " + number(*col.overflowLevel) +
-                                         " m is below water_level = " + number(col.waterLevel) +
-                                         " m" +
-                                         (s.has("water_level") ? "" : " (the default: sand top)") +
-                                         "; expected overflow_level >= water_level");
         col.top = s.requiredNumber("top", positive("m"),
                                    "top of the grid, above water and overflow levels");
-        if (!above(col.top, col.waterLevel))
-            s.fail("top", "top = " + number(col.top) +
-                              " m is not above water_level = " + number(col.waterLevel) +
-                              " m; the grid must reach above the free surface");
-        if (col.overflowLevel && !above(col.top, *col.overflowLevel))
-            s.fail("top", "top = " + number(col.top) +
-                              " m is not above overflow_level = " + number(*col.overflowLevel) +
-                              " m; the grid must reach above the overflow");
-        requireWholeCells(s, "top", col.top, h);
     }
 
     void readPoints(const Section& root) {
@@ -848,6 +406,9 @@ private:
     void readInitial(const Section& root) {
         const Section s = root.subsection("initial", kInitial, false);
         InitialConfig& i = c_.initial;
+        i.state = s.choice("state", InitialState::Solid, kStateOptions);
+        // Which keys apply to a bed that starts fluidised: the schema's, as they decide what is
+        // read (the stress of a suspension is zero whatever the file says).
         if (i.state == InitialState::Fluidised) {
             // a suspension carries no effective stress: its weight rests on the pore water
             if (s.has("stress") && s.choice("stress", InitialStress::Zero, kStressOptions) != InitialStress::Zero)
@@ -865,24 +426,6 @@ private:
             between(-std::numeric_limits<double>::infinity(), false, std::numeric_limits<double>::infinity(), false, "m/s"),
             "upward filter velocity q0 of an initial steady seepage, m/s");
         i.undrainedSurcharge = s.boolean("undrained_surcharge", false);
-        if (i.undrainedSurcharge && !(c_.loads.surcharge > 0.0))
-            s.fail("undrained_surcharge",
-                   "undrained_surcharge = true needs a surcharge, but "
-                   "loads.surcharge is " +
-                       number(c_.loads.surcharge) +
-                       " Pa; set loads.surcharge > 0 or remove this key");
-        // Zones side by side start from a state built column by column: right at rest under
-        // hydrostatic water, not yet for the starts that need one flux per zone from a shared
-        // chamber and top (a seepage or fluidised start) or one undrained response
-        bool zones = false;
-        for (const LayerConfig& l : c_.layers) zones = zones || !l.zones.empty();
-        if (zones) {
-            const std::string why = "the layers have [[layers.zones]], whose initial state is built only at rest "
-                                    "so far (a start that needs one flux or undrained response per zone is not)";
-            if (i.filterVelocity != 0.0) s.fail("filter_velocity", "filter_velocity must be 0 here: " + why);
-            if (i.undrainedSurcharge) s.fail("undrained_surcharge", "undrained_surcharge must be false here: " + why);
-            if (i.state == InitialState::Fluidised) s.fail("state", "state must be \"solid\" here: " + why);
-        }
         i.gravityStageDuration = s.optionalNumber("gravity_stage_duration", 0.0, nonNegative("s"));
         i.gravityStageDamping =
             s.optionalNumber("gravity_stage_damping", 0.05, between(0, false, 1, true));
@@ -892,6 +435,7 @@ private:
         const Section s = root.subsection("gate", kGate, false);
         GateConfig& g = c_.gate;
         g.mode = s.choice("mode", GateMode::Pressure, kGateOptions);
+        // the mode decides which keys are read (and a key given for another mode is an error)
         if (g.mode == GateMode::Flux) {
             g.flux =
                 s.requiredNumber("flux", anyValue("m/s"),
@@ -996,11 +540,11 @@ private:
         if (!monitors) return;
         std::vector<int> lines;
         for (std::size_t i = 0; i < monitors->size(); ++i) {
-            const Section s(file_, monitors->get(i)->as_table(),
-                            "monitors[" + std::to_string(i) + "]", kMonitor,
-                            root.lineOf("monitors"));
+            const Section s = root.entry("monitors", i, kMonitor);
             MonitorConfig m;
             m.name = s.requiredString("name", "a unique name for the monitor");
+            // names head the columns of series.csv, so they must differ; checked as they are
+            // read, since the message quotes the line of the first monitor of that name
             for (std::size_t j = 0; j < c_.monitors.size(); ++j)
                 if (c_.monitors[j].name == m.name)
                     s.fail("name", "monitor name " + inQuotes(m.name) +
@@ -1015,8 +559,8 @@ private:
                 s.forbid("x", "a 1D section has no horizontal extent");
                 s.forbid("y", "a 1D section has no horizontal extent");
             } else {
-                m.x = s.optionalRange("x", c_.grid.width, part);
-                if (c_.grid.dimension == 3) m.y = s.optionalRange("y", c_.grid.width, part + " along y");
+                m.x = optionalRange(s, "x", c_.grid.width, part);
+                if (c_.grid.dimension == 3) m.y = optionalRange(s, "y", c_.grid.width, part + " along y");
                 else s.forbid("y", "y applies only in 3D (grid.dimension = 3)");
             }
             c_.monitors.push_back(m);
@@ -1053,7 +597,7 @@ private:
         c_.output.progressInterval = s.optionalNumber("progress_interval", 2.0, positive("s"));
     }
 
-    std::string file_;
+    KeyLocations& where_;
     std::string caseDirectory_;
     CaseConfig c_;
 };
@@ -1077,7 +621,8 @@ CaseConfig parseCase(const std::string& tomlText, const std::string& fileName,
                          "TOML syntax error: " + std::string(result.error().description()));
     root = std::move(result).table();
 #endif
-    return Loader(fileName, caseDirectory).load(root);
+    KeyLocations where(fileName);
+    return Loader(where, caseDirectory).load(root);
 }
 
 CaseConfig loadCase(const std::string& caseDirectory) {

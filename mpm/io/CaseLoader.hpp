@@ -5,9 +5,13 @@
 //   qs::CaseConfig config = qs::loadCase("cases/deltaresColumn");   // reads .../case.toml
 //   // config is complete: every default filled in, every range and cross-check passed.
 //
-// This is the only code in quicksand that sees TOML (toml++). The keys, units, defaults and
-// allowed ranges are listed in docs/case-format.md; the accepted keys of each table are declared
-// once, in CaseLoader.cpp, and drive the unknown-key check ("Did you mean ...").
+// Loading has two steps. The schema (CaseLoader.cpp) reads each table and checks each key on its
+// own: its type, its range, whether it applies with the choices made elsewhere; the keys, units,
+// defaults and ranges are those of docs/case-format.md, and the accepted keys of each table are
+// declared once there and drive the unknown-key check ("Did you mean ..."). The rules that relate
+// several keys (io/CaseRules.hpp: whole cells, levels, porosity bounds, ...) are checked on the
+// loaded values, once the keys they relate are read. The TOML toolkit under the schema is
+// io/TomlSection.hpp; only these files see TOML (toml++).
 //
 // Every problem is reported as qs::InputError naming the file, the line of the offending node
 // (for a missing key, the line of the table that should hold it), the full dotted key

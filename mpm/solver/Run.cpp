@@ -16,8 +16,8 @@
 #include "io/FieldWriter.hpp"
 #include "io/SeriesWriter.hpp"
 #include "coupling/CouplingScheme.hpp"
-#include "reservoir/ConstantHead.hpp"
 #include "reservoir/ReservoirModel.hpp"
+#include "solver/RunPreconditions.hpp"
 #include "solver/RunSize.hpp"
 
 namespace qs {
@@ -178,12 +178,11 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     const fs::path checkpointPath = outDir / "checkpoint.h5";
     const bool windowed = options.windowedModel || config.reservoir.kind == ReservoirKind::OpenFoam;
 
-    // Validate everything that can be validated before touching an earlier output directory.
-    requireStableTimeStep(config);
-    requireFitsMachine(config, estimateRunSize(config), machineMemory());
+    // Validate everything that can be validated before touching an earlier output directory:
+    // what `quicksand check` validates too (solver/RunPreconditions.hpp).
+    validateRun(config);
     std::unique_ptr<ReservoirModel> builtIn;
     if (!windowed) builtIn = makeReservoirModel(config);
-    else { ConstantHead probe(config.liquid.density, config.gravity, 0.0); DoublePointSolver<D> check(config, probe); }
     if (options.resume)
         QS_CHECK(fs::exists(checkpointPath),
                  "cannot resume: no checkpoint at " << checkpointPath.string()

@@ -57,12 +57,12 @@ struct MachineMemory {
 MachineMemory machineMemory();
 
 /// Throws qs::Error naming the file and key when time.dt exceeds the stable step 0.5 h / c_fast.
-/// `quicksand check` and `run` both call it, so that whatever `run` refuses before its first step
-/// `check` refuses too.
+/// One of the preconditions of a run that `quicksand check` and `run` share (validateRun,
+/// solver/RunPreconditions.hpp).
 void requireStableTimeStep(const CaseConfig& config);
 
 /// Throws qs::Error, with the numbers, when the estimated peak memory exceeds the machine's
-/// (`quicksand check` and `run` both call it before anything is allocated).
+/// (validateRun calls it before anything is allocated).
 void requireFitsMachine(const CaseConfig& config, const RunSize& size, const MachineMemory& machine);
 
 /// "1.2 GiB", "350 MiB", ...
