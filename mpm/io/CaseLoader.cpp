@@ -199,8 +199,18 @@ private:
         } else {
             g.width = s.optionalNumber("width", 0.0, positive("m"), "ignored in 1D");
         }
-        g.crossSectionArea =
-            s.requiredNumber("cross_section_area", positive("m2"), "cross-section of the column");
+        if (g.dimension == 3) {
+            // The square column's cross-section follows from its width; a given one must agree.
+            const double square = g.width * g.width;
+            const auto given = s.optionalNumber("cross_section_area", positive("m2"), "= width^2 in 3D, may be left out");
+            if (given && std::abs(*given - square) > 1e-9 * square)
+                s.fail("cross_section_area", "value " + number(*given) + " m2 disagrees with the 3D column's width^2 = " +
+                                                 number(square) + " m2 (leave it out: in 3D it follows from grid.width)");
+            g.crossSectionArea = square;
+        } else {
+            g.crossSectionArea =
+                s.requiredNumber("cross_section_area", positive("m2"), "cross-section of the column");
+        }
         g.shapeFunctions =
             s.choice("shape_functions", ShapeFunctionKind::Linear, kShapeFunctionOptions);
     }

@@ -93,6 +93,8 @@ CASES = {
     "water_above_top": (sub("water_level = 0.2046", "water_level = 0.3"), "check", "-", ["column.top", "water_level = 0.3"]),
     "top_below_sand": (sub("top = 0.2232", "top = 0.1"), "check", "-", ["column.top"]),
     "width_in_2d_missing": (sub("dimension = 1", "dimension = 2"), "check", "-", ["grid.width"]),
+    "cross_section_disagrees_in_3d": (sub("dimension = 1", "dimension = 3\nwidth = 0.0744"), "check|run", "-",
+                                      ["case.toml:12", "grid.cross_section_area", "disagrees", "width^2 = 0.00553536"]),
     "zones_in_1d": (sub("thickness = 0.186", 'thickness = 0.186\n\n[[layers.zones]]\nmaterial = "sand"\nx = [0.0, 0.01]'), "check", "-", ["layers[0].zones", "dimension"]),
     "monitor_range_in_1d": (sub("elevation = 0.1116", "elevation = 0.1116\nx = [0.0, 0.01]"), "check", "-", ["monitors[0].x"]),
     "duplicate_monitor_names": (BASE + '\n[[monitors]]\nname = "mid"\nelevation = 0.05\n', "check", "-", ["monitors[1].name", "unique"]),
