@@ -3,6 +3,8 @@
 #include <cmath>
 #include <iomanip>
 #include <ostream>
+#include <sstream>
+#include <string>
 
 #include "physics/ClosedForms.hpp"
 #include "physics/Permeability.hpp"
@@ -11,6 +13,17 @@
 #include "solver/RunSize.hpp"
 
 namespace qs {
+
+namespace {
+/// A step count to print: a whole number while it fits, else the double (an absurd case,
+/// e.g. a bulk modulus typed in the wrong unit, must not print an overflowed integer).
+std::string stepCount(double steps) {
+    std::ostringstream s;
+    if (steps < 1e15) s << std::llround(steps);
+    else s << steps;
+    return s.str();
+}
+}  // namespace
 
 double expectedSteadyFilterVelocity(const CaseConfig& config) {
     if (config.gate.mode != GateMode::Pressure) return 0.0;
@@ -75,6 +88,9 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         << config.column.waterLevel << " m";
     if (config.column.overflowLevel) out << ", overflow " << *config.column.overflowLevel << " m";
     out << ", grid top " << config.column.top << " m\n";
+    if (const auto& f = config.initial.porosityField; f.enabled)
+        out << "random porosity field: n0 + " << f.standardDeviation << " g(x), correlation length "
+            << f.correlationLength << " m, seed " << f.seed << " (clipped to [n_min, n_max - 0.001])\n";
 
     double cMax = std::sqrt(KL / rho);
     for (const auto& m : config.materials) {
@@ -108,8 +124,7 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
     }
     const double dtStable = config.time.courant * h / cMax;
     out << "time step: c_fast = " << cMax << " m/s, dt = courant h / c_fast = " << dtStable << " s ("
-        << std::llround(config.time.end / (config.time.dt ? *config.time.dt : dtStable))
-        << " steps to t = " << config.time.end << " s)\n";
+        << stepCount(config.time.end / (config.time.dt ? *config.time.dt : dtStable)) << " steps to t = " << config.time.end << " s)\n";
     printRunSize(config, out);
     out << "points: " << config.points.solidPerCell << " solid and " << config.points.liquidPerCell
         << " liquid per sand cell and axis, " << freeWaterPointsPerCell(config)

@@ -15,6 +15,7 @@
 //   filter     -- the permeable gate: solid held, liquid passes (= chamber height)
 //   0          -- chamber bottom: the gate pressure acts here on the liquid
 #include <optional>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -115,6 +116,15 @@ struct PointsConfig {
     int liquidPerCell = 2;             ///< liquid points per sand cell and direction
 };
 
+/// [initial.porosity_field]: n(x) = n0 + standard_deviation g(x), g a Gaussian random field of
+/// unit variance (physics/RandomPorosityField.hpp), clipped to [n_min, n_max).
+struct PorosityFieldConfig {
+    bool enabled = false;
+    double standardDeviation = 0.0;  ///< -, of the porosity
+    double correlationLength = 0.0;  ///< m
+    std::uint64_t seed = 0;
+};
+
 struct InitialConfig {
     InitialState state = InitialState::Solid;  ///< Fluidised: a suspension, n0 >= n_max allowed
     InitialStress stress = InitialStress::K0;
@@ -124,6 +134,7 @@ struct InitialConfig {
     bool undrainedSurcharge = false;   ///< start from the undrained state under the surcharge
     double gravityStageDuration = 0.0; ///< s, quasi-static stage before t = 0 (0: none)
     double gravityStageDamping = 0.05; ///< -, local damping alpha in that stage
+    PorosityFieldConfig porosityField; ///< a random porosity field over the sand (off by default)
 };
 
 struct LoadConfig {

@@ -60,7 +60,8 @@ constexpr const char* kLiquidKeys[] = {"density",
                                        "grid_liquid_mass"};
 constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
 constexpr const char* kInitialKeys[] = {"state", "stress", "rigid_skeleton", "filter_velocity", "undrained_surcharge",
-                                        "gravity_stage_duration", "gravity_stage_damping"};
+                                        "gravity_stage_duration", "gravity_stage_damping", "porosity_field"};
+constexpr const char* kPorosityFieldKeys[] = {"standard_deviation", "correlation_length", "seed"};
 constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
 constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
 constexpr const char* kReservoirKeys[] = {
@@ -83,6 +84,7 @@ const TableKeys kZone = tableKeys("[[layers.zones]]", kZoneKeys);
 const TableKeys kLiquid = tableKeys("[liquid]", kLiquidKeys);
 const TableKeys kPoints = tableKeys("[points]", kPointsKeys);
 const TableKeys kInitial = tableKeys("[initial]", kInitialKeys);
+const TableKeys kPorosityField = tableKeys("[initial.porosity_field]", kPorosityFieldKeys);
 const TableKeys kLoads = tableKeys("[loads]", kLoadsKeys);
 const TableKeys kGate = tableKeys("[gate]", kGateKeys);
 const TableKeys kReservoir = tableKeys("[reservoir]", kReservoirKeys);
@@ -94,7 +96,7 @@ const TableKeys kOutput = tableKeys("[output]", kOutputKeys);
 const TableCatalogue kAllTables = {&kRoot,  &kGrid,      &kColumn,   &kMaterial, &kPermeability,
                                    &kLayer, &kLiquid,    &kPoints,   &kInitial,  &kLoads,
                                    &kGate,  &kReservoir, &kCoupling, &kTime,     &kMonitor,
-                                   &kOutput};
+                                   &kOutput, &kPorosityField};
 
 /// Largest intrinsic permeability accepted (m2). Clean gravel is ~1e-7 m2; larger values are
 /// almost always a hydraulic conductivity in m/s typed where kappa in m2 belongs.
@@ -439,6 +441,19 @@ private:
         i.gravityStageDuration = s.optionalNumber("gravity_stage_duration", 0.0, nonNegative("s"));
         i.gravityStageDamping =
             s.optionalNumber("gravity_stage_damping", 0.05, between(0, false, 1, true));
+        if (s.has("porosity_field")) {
+            if (i.state == InitialState::Fluidised)
+                s.fail("porosity_field", "a bed that starts fluidised has no porosity of its own to vary "
+                                         "(remove porosity_field or start with state = \"solid\")");
+            const Section f = s.subsection("porosity_field", kPorosityField, true);
+            PorosityFieldConfig& p = i.porosityField;
+            p.enabled = true;
+            p.standardDeviation = f.requiredNumber("standard_deviation", between(0, false, 0.1, false),
+                                                   "standard deviation of the porosity (-), e.g. 0.01");
+            p.correlationLength = f.requiredNumber("correlation_length", positive("m"),
+                                                   "distance over which the porosity is alike, m");
+            p.seed = static_cast<std::uint64_t>(f.integer("seed", 1, between(0, false, 2147483647.0, false)));
+        }
     }
 
     void readGate(const Section& root) {

@@ -1,11 +1,14 @@
 #include "solver/ColumnBuilder.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include "core/Error.hpp"
 #include "materials/StressTensor.hpp"
 #include "physics/ClosedForms.hpp"
 #include "physics/Permeability.hpp"
+#include "physics/RandomPorosityField.hpp"
 #include "solver/DoublePointSolver.hpp"
 
 namespace qs {
@@ -119,6 +122,18 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
         return a;
     };
     const bool fluidised = config.initial.state == InitialState::Fluidised;
+    // The porosity where a point starts: n0 of its material, or n0 + sigma g(x) of a random field,
+    // clipped to [n_min, n_max - 0.001] (the sand starts below its loosest state). The weight above
+    // (the K0 stresses) is taken at n0: the gravity stage or the first steps settle the rest.
+    const PorosityFieldConfig& field = config.initial.porosityField;
+    const std::optional<RandomPorosityField> randomField =
+        field.enabled ? std::optional<RandomPorosityField>(std::in_place, D, field.correlationLength, field.seed)
+                      : std::nullopt;
+    auto porosityAt = [&](const MaterialConfig& mc, const Vec<D>& x) -> Real {
+        if (!randomField) return mc.porosity;
+        const Real n = mc.porosity + field.standardDeviation * randomField->unitField(&x[0]);
+        return std::clamp(n, Real(mc.minPorosity), Real(mc.maxPorosity - 0.001));
+    };
     Real chamberExcess = 0;  // excess pore pressure at the filter, shared by the chamber water
 
     for (std::size_t k = 0; k < nl; ++k) {
@@ -163,19 +178,19 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
                 stress[0] += lateralRatio * dsv;
                 stress[1] += lateralRatio * dsv;
             }
-            appendSolid(solid, x, V, mc.porosity, mc.grainDensity, at.index, stress,
+            appendSolid(solid, x, V, porosityAt(mc, x), mc.grainDensity, at.index, stress,
                         fluidised ? kFluidisedState : kSolidState);
         });
         forEachLatticePoint(grid, lpc, zb, zt, cells * lpc, [&](const Vec<D>& x, Real V) {
             const Local at = local(x);
             const MaterialConfig& mc = *at.mc;
+            const Real n = porosityAt(mc, x);
             Real u0 = 0;
             if (config.initial.undrainedSurcharge) {
                 const Real mv = 1 / materials[at.index].model->oedometricModulus();
-                u0 = config.loads.surcharge * mv / (mv + mc.porosity / config.liquid.bulkModulus);
+                u0 = config.loads.surcharge * mv / (mv + n / config.liquid.bulkModulus);
             }
-            appendLiquid(liquid, x, V, mc.porosity * rhoL * V, hydrostatic(x[D - 1]) + u0 + at.excess,
-                         q0 / mc.porosity);
+            appendLiquid(liquid, x, V, n * rhoL * V, hydrostatic(x[D - 1]) + u0 + at.excess, q0 / n);
         });
     }
 

@@ -17,7 +17,15 @@ namespace qs {
 
 namespace {
 
-std::int64_t cellsIn(double length, double h) { return std::llround(length / h); }
+/// A count computed in double, as an integer; beyond what int64 holds it saturates (such a run is
+/// then refused as too large) instead of overflowing (found by fuzzing the case loader).
+std::int64_t saturatedCount(double x) {
+    constexpr double kLargest = 9.0e18;  // below INT64_MAX = 9.22e18
+    if (!(x < kLargest)) return static_cast<std::int64_t>(kLargest);
+    return x > 0 ? static_cast<std::int64_t>(x) : 0;
+}
+
+std::int64_t cellsIn(double length, double h) { return saturatedCount(std::round(length / h)); }
 
 // Bytes per point or per grid entity, from the fields the solver keeps (double = 8, Index = 8,
 // int = 4, char = 1); D is the grid dimension.
@@ -41,7 +49,7 @@ double cellBytes(int D) { return 8.0 * 3 + 2 + 8.0 * (6 + D); }
 std::int64_t liquidCapacity(const CaseConfig& config, std::int64_t cells, std::int64_t initialLiquid) {
     const int D = config.grid.dimension;
     const double perLayer = std::pow(double(config.points.liquidPerCell), D - 1);
-    return 4 * cells * freeWaterPointsPerCell(config) * static_cast<std::int64_t>(perLayer) + initialLiquid;
+    return saturatedCount(4.0 * double(cells) * freeWaterPointsPerCell(config) * perLayer + double(initialLiquid));
 }
 
 double fastestWaveSpeed(const CaseConfig& config) {
@@ -65,36 +73,35 @@ RunSize estimateRunSize(const CaseConfig& config) {
     const int spc = config.points.solidPerCell, lpc = config.points.liquidPerCell;
     RunSize r;
 
-    std::int64_t horizontalCells = 1, horizontalNodes = 1;
+    double horizontalCells = 1, horizontalNodes = 1;
     for (int d = 0; d < D - 1; ++d) {
-        horizontalCells *= cellsIn(config.grid.width, h);
-        horizontalNodes *= cellsIn(config.grid.width, h) + 1;
+        horizontalCells *= double(cellsIn(config.grid.width, h));
+        horizontalNodes *= double(cellsIn(config.grid.width, h)) + 1;
     }
-    const std::int64_t rows = cellsIn(config.column.top, h);
-    r.cells = horizontalCells * rows;
-    r.nodes = horizontalNodes * (rows + 1);
+    const double rows = double(cellsIn(config.column.top, h));
+    r.cells = saturatedCount(horizontalCells * rows);
+    r.nodes = saturatedCount(horizontalNodes * (rows + 1));
 
     // the lattices of ColumnBuilder: per sand cell spc (solid) and lpc (liquid) per axis; free
     // water freeWaterPointsPerCell along the vertical, lpc per horizontal axis
     const double solidPerLayer = std::pow(double(spc), D - 1) * horizontalCells;
     const double liquidPerLayer = std::pow(double(lpc), D - 1) * horizontalCells;
     for (const auto& layer : config.layers) {
-        const std::int64_t c = cellsIn(layer.thickness, h);
-        r.solidPoints += static_cast<std::int64_t>(c * spc * solidPerLayer);
-        r.liquidPoints += static_cast<std::int64_t>(c * lpc * liquidPerLayer);
+        const double c = double(cellsIn(layer.thickness, h));
+        r.solidPoints = saturatedCount(double(r.solidPoints) + c * spc * solidPerLayer);
+        r.liquidPoints = saturatedCount(double(r.liquidPoints) + c * lpc * liquidPerLayer);
     }
     const int nzFree = freeWaterPointsPerCell(config);
     auto freeWater = [&](double thickness) {
-        const std::int64_t nz = std::llround(thickness / h * nzFree);
-        if (nz > 0) r.liquidPoints += static_cast<std::int64_t>(nz * liquidPerLayer);
+        const double nz = std::round(thickness / h * nzFree);
+        if (nz > 0) r.liquidPoints = saturatedCount(double(r.liquidPoints) + nz * liquidPerLayer);
     };
     freeWater(config.filterLevel());
     if (config.column.waterLevel > config.sandTop() + 1e-12) freeWater(config.column.waterLevel - config.sandTop());
     r.liquidCapacity = liquidCapacity(config, r.cells, r.liquidPoints);
 
     r.dt = timeStep(config);
-    r.steps = static_cast<std::int64_t>(
-        std::ceil((config.time.end + std::max(0.0, config.initial.gravityStageDuration)) / r.dt));
+    r.steps = saturatedCount(std::ceil((config.time.end + std::max(0.0, config.initial.gravityStageDuration)) / r.dt));
 
     // The solver's arrays, and one more copy of the point state (a checkpoint being written, or
     // the rollback copy of an implicit coupling window).

@@ -101,6 +101,12 @@ CASES = {
     "flux_with_pressure_gate": (BASE + '\n[gate]\nmode = "pressure"\nflux = 1e-3\n', "check", "-", ["gate.flux"]),
     "mohr_coulomb_key_on_linear": (add("[materials.sand]", "friction_angle = 30"), "check", "-", ["friction_angle"]),
     "undrained_without_surcharge": (BASE + "\n[initial]\nundrained_surcharge = true\n", "check", "-", ["initial.undrained_surcharge", "surcharge"]),
+    "porosity_field_negative_deviation": (BASE + '\n[initial.porosity_field]\nstandard_deviation = -0.01\ncorrelation_length = 0.02\n',
+                                          "check", "-", ["initial.porosity_field.standard_deviation", "-0.01"]),
+    "porosity_field_misspelt_key": (BASE + '\n[initial.porosity_field]\nstandard_deviaton = 0.01\ncorrelation_length = 0.02\n',
+                                    "check", "-", ["standard_deviaton", "standard_deviation"]),
+    "porosity_field_in_a_fluidised_start": (sub("porosity = 0.38", "porosity = 0.45") + '\n[initial]\nstate = "fluidised"\n\n[initial.porosity_field]\nstandard_deviation = 0.01\ncorrelation_length = 0.02\n',
+                                            "check", "-", ["initial.porosity_field", "fluidised"]),
     "fluidised_below_max_porosity": (BASE + '\n[initial]\nstate = "fluidised"\nstress = "k0"\n', "check", "-", ["initial.stress"]),
     "dt_beyond_stable": (BASE.replace("end = 0.5", "end = 0.5\ndt = 1.0e-3"), "check|run", "-", ["time.dt", "stable step"]),
     # unit mistakes

@@ -72,3 +72,14 @@ TEST(RunSize, ACaseBeyondTheMachinesMemoryIsRefusedWithTheNumbers) {
     big.total = 2 * r.peakBytes;
     EXPECT_NO_THROW(requireFitsMachine(c, r, big));
 }
+
+// Found by fuzzing the case loader: a bulk modulus typed as 1e70 Pa gives a step of 1e-38 s,
+// and the step count (1e37) overflowed the integer it was converted to (undefined behaviour).
+// Counts beyond int64 now saturate; the estimate still says the run would never end.
+TEST(RunSize, AnAbsurdStepCountSaturatesInsteadOfOverflowing) {
+    CaseConfig c = shipped("verification/geostatic");
+    c.liquid.bulkModulus = 1e70;
+    const RunSize r = estimateRunSize(c);
+    EXPECT_EQ(r.steps, std::int64_t(9.0e18));
+    EXPECT_GT(r.wallSeconds, 1e20);
+}
