@@ -81,5 +81,5 @@ TEST(RunSize, AnAbsurdStepCountSaturatesInsteadOfOverflowing) {
     c.liquid.bulkModulus = 1e70;
     const RunSize r = estimateRunSize(c);
     EXPECT_EQ(r.steps, std::int64_t(9.0e18));
-    EXPECT_GT(r.wallSeconds, 1e20);
+    EXPECT_GT(r.wallSeconds, 1e13);  // from the saturated count: still millions of years
 }
