@@ -52,7 +52,7 @@ execute_process(
 file(WRITE "${WORK_DIR}/fuzzer.log" "${out}${err}")
 string(REGEX MATCH "stat::number_of_executed_units: *[0-9]+" runs "${err}")
 string(REGEX MATCH "stat::average_exec_per_sec: *[0-9]+" speed "${err}")
-string(REGEX MATCH "DONE +cov: [0-9]+ ft: [0-9]+ corp: [0-9/]+[kMb]*" coverage "${err}")  # the last line, not INITED
+string(REGEX MATCH "DONE +cov: [0-9]+ ft: [0-9]+ corp: [0-9/]+[kKMb]*" coverage "${err}")  # the last line, not INITED
 message(STATUS "${FUZZ_TARGET}: ${runs}, ${speed}, ${coverage} (log: ${WORK_DIR}/fuzzer.log)")
 file(GLOB found "${findings}/*")
 if(NOT rc EQUAL 0 OR found)
