@@ -4,11 +4,82 @@
 #   bash tools/benchmark.sh            Google Benchmark (tools/benchmarks/bench_step.cpp) with 1 and
 #                                      2 threads, then the longest verification case through the
 #                                      command line (wall time, steps/s, point updates/s)
+#   bash tools/benchmark.sh --lateral  2D and 3D columns of 1e4 to 1e6 points (BM_Step2D, BM_Step3D)
+#                                      with 1 and 2 threads: updates/s, the 2-thread speed-up,
+#                                      bytes per point, and the fraction of the memory bandwidth
+#                                      (a STREAM triad compiled and run here) that streaming every
+#                                      resident byte once per step would take
+#   bash tools/benchmark.sh --consolidation3d   the 3D consolidation benchmark case, 1 and 2 threads
 # Speed is measured here, never by timed tests.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 bash tools/build.sh >/dev/null
 build_dir="${QUICKSAND_BUILD_DIR:-build}"
+mode="${1:-}"
+
+if [[ "$mode" == "--consolidation3d" ]]; then
+    work="$(mktemp -d)"
+    trap 'rm -rf "$work"' EXIT
+    for threads in 1 2; do
+        rm -rf "$work/case"; cp -r cases/benchmark/consolidation3d "$work/case"
+        echo "== cases/benchmark/consolidation3d, OMP_NUM_THREADS=$threads"
+        OMP_NUM_THREADS=$threads "$build_dir/mpm/quicksand" run "$work/case" | grep -E "^quicksand: done"
+    done
+    exit 0
+fi
+
+if [[ "$mode" == "--lateral" ]]; then
+    work="$(mktemp -d)"
+    trap 'rm -rf "$work"' EXIT
+    # STREAM's triad a = b + s c over arrays far larger than the caches: the machine's bandwidth
+    cat > "$work/triad.cpp" <<'TRIAD'
+#include <chrono>
+#include <cstdio>
+#include <vector>
+int main() {
+    const long n = 1L << 25;  // 3 arrays of 256 MiB
+    std::vector<double> a(n, 0.0), b(n, 1.0), c(n, 2.0);
+    double best = 1e30;
+    for (int rep = 0; rep < 5; ++rep) {
+        const auto t0 = std::chrono::steady_clock::now();
+#pragma omp parallel for schedule(static)
+        for (long i = 0; i < n; ++i) a[i] = b[i] + 3.0 * c[i];
+        const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        if (s < best) best = s;
+    }
+    std::printf("%.3f\n", 3.0 * 8.0 * n / best / 1e9);  // GB/s: read b, c; write a
+    return a[n / 2] == 7.0 ? 0 : 1;
+}
+TRIAD
+    g++ -O3 -fopenmp "$work/triad.cpp" -o "$work/triad"
+    declare -A triad
+    for threads in 1 2; do
+        triad[$threads]=$(OMP_NUM_THREADS=$threads "$work/triad")
+        echo "== triad, OMP_NUM_THREADS=$threads: ${triad[$threads]} GB/s"
+    done
+    for threads in 1 2; do
+        OMP_NUM_THREADS=$threads "$build_dir/tools/benchmarks/quicksand_benchmarks" \
+            --benchmark_filter='BM_Step[23]D' --benchmark_min_time=1 --benchmark_format=csv 2>/dev/null \
+            > "$work/lateral_$threads.csv"
+    done
+    /usr/bin/python3 - "$work" "${triad[1]}" "${triad[2]}" <<'PY'
+import csv, sys
+work, triad = sys.argv[1], {1: float(sys.argv[2]), 2: float(sys.argv[3])}
+def rows(t):
+    with open(f"{work}/lateral_{t}.csv") as f:
+        lines = [l for l in f if l.startswith('"BM_') or l.startswith("name")]
+    return {r["name"]: r for r in csv.DictReader(lines)}
+one, two = rows(1), rows(2)
+print(f"{'benchmark':<16}{'points':>10}{'M upd/s 1t':>12}{'M upd/s 2t':>12}{'speed-up':>10}{'B/point':>9}{'bw 1t':>8}{'bw 2t':>8}")
+for name, r1 in one.items():
+    r2 = two[name]
+    u1, u2 = float(r1["items_per_second"]), float(r2["items_per_second"])
+    b = float(r1["bytes_per_point"])
+    print(f"{name:<16}{float(r1['points']):>10.0f}{u1/1e6:>12.2f}{u2/1e6:>12.2f}{u2/u1:>10.2f}{b:>9.0f}"
+          f"{b*u1/1e9/triad[1]:>8.1%}{b*u2/1e9/triad[2]:>8.1%}")
+PY
+    exit 0
+fi
 
 echo "== machine: $(nproc) cores, $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ //')"
 for threads in 1 2; do

@@ -4,9 +4,16 @@
 //                                                          longest verification case)
 // BM_Step/<cells per metre>: one step of the coarse steady-seepage column (1D, rigid skeleton,
 // inflow and outflow active) refined to the given cell size; items = points x steps.
+// BM_Step2D/<columns>, BM_Step3D/<columns>: the same column (9.3 mm cells, deformable) made
+// <columns> cells of the cross-section wide (2D: columns across; 3D: about sqrt(columns) by
+// sqrt(columns)), about 200 points per column: 1e4 to 1e6 points. Counters: points, and
+// bytes_per_point, the resident memory the solver added (grid included) per point.
 #include <benchmark/benchmark.h>
 
+#include <cmath>
+#include <fstream>
 #include <memory>
+#include <unistd.h>
 
 #include "io/CaseLoader.hpp"
 #include "reservoir/ReservoirModel.hpp"
@@ -46,6 +53,40 @@ void BM_Step(benchmark::State& state) {
     state.counters["points"] = static_cast<double>(solver.solid().size() + solver.liquid().size());
 }
 BENCHMARK(BM_Step)->ArgsProduct({{108, 1075, 10753}, {0, 1}})->Unit(benchmark::kMicrosecond);
+
+/// Resident memory of this process (bytes), from /proc/self/statm.
+double residentBytes() {
+    std::ifstream statm("/proc/self/statm");
+    double size = 0, resident = 0;
+    statm >> size >> resident;
+    return resident * static_cast<double>(sysconf(_SC_PAGESIZE));
+}
+
+template <int D>
+void BM_StepLateral(benchmark::State& state) {
+    const long columns = state.range(0);
+    qs::CaseConfig c = benchmarkCase(0.0093, false);
+    const long across = D == 2 ? columns : std::max(1L, std::lround(std::sqrt(double(columns))));
+    c.grid.dimension = D;
+    c.grid.width = across * c.grid.cellSize;
+    c.grid.crossSectionArea = D == 3 ? c.grid.width * c.grid.width : c.grid.crossSectionArea;
+    const double before = residentBytes();
+    auto reservoir = qs::makeReservoirModel(c);
+    qs::DoublePointSolver<D> solver(c, *reservoir);
+    for (int k = 0; k < 5; ++k) solver.step();  // every array touched once
+    const double points = static_cast<double>(solver.solid().size() + solver.liquid().size());
+    const double added = residentBytes() - before;
+    std::size_t updates = 0;
+    for (auto _ : state) {
+        solver.step();
+        updates += solver.solid().size() + solver.liquid().size();
+    }
+    state.SetItemsProcessed(static_cast<int64_t>(updates));
+    state.counters["points"] = points;
+    state.counters["bytes_per_point"] = added / points;
+}
+BENCHMARK_TEMPLATE(BM_StepLateral, 2)->Name("BM_Step2D")->Arg(50)->Arg(500)->Arg(5000)->Unit(benchmark::kMillisecond);
+BENCHMARK_TEMPLATE(BM_StepLateral, 3)->Name("BM_Step3D")->Arg(49)->Arg(484)->Arg(5041)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 
