@@ -4,10 +4,15 @@
 // Tolerance 0.05 u0 for T >= 0.05 on every sand cell row.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <map>
+#include <vector>
 
 #include "VerificationCase.hpp"
 #include "physics/ClosedForms.hpp"
+#include "reservoir/ReservoirModel.hpp"
+#include "solver/DoublePointSolver.hpp"
 
 using namespace qs;
 using namespace qs::test;
@@ -58,4 +63,62 @@ TEST(Terzaghi, ExcessPorePressureFollowsVerruijtSolutionWithGimpOnePointPerCell)
     // the largest uGIMP domain (half a cell): the case that exposed solid support leaking below
     // the filter (the base then stayed at 0.96 u0 instead of 0.36 at T = 0.5)
     checkTerzaghi(ShapeFunctionKind::Gimp, 1);
+}
+
+// The same problem in 2D (4 cells wide) and 3D (2 x 2 cells): rows against the closed form with
+// the 1D tolerance, and the pore pressure of every row laterally uniform. The column is
+// laterally uniform, so this checks that the 2D and 3D step reproduce the 1D physics (and grows
+// no lateral mode); lateral errors proper are the business of test_LateralPhysics.cpp.
+namespace {
+template <int D>
+void checkTerzaghiInDimension(int across, double tolerance, double guard) {
+    CaseConfig c = loadVerificationCase("terzaghi");
+    c.grid.dimension = D;
+    c.grid.width = across * c.grid.cellSize;
+    if (D == 3) c.grid.crossSectionArea = c.grid.width * c.grid.width;
+    const auto& sand = c.material("sand");
+    const double Eoed = closed::oedometricModulus(sand.youngsModulus, sand.poissonRatio);
+    const double KL = c.liquid.bulkModulus, n = sand.porosity;
+    const double u0 = c.loads.surcharge * closed::undrainedPressureRatio(Eoed, n, KL);
+    const double cv = (sand.permeability.value / c.liquid.viscosity) / (1 / Eoed + n / KL);
+    const double H = c.sandTop() - c.filterLevel(), h = c.grid.cellSize;
+    auto reservoir = makeReservoirModel(c);
+    DoublePointSolver<D> solver(c, *reservoir);
+    double worst = 0, spread = 0;
+    for (const double T : {0.05, 0.1, 0.2}) {
+        while (cv * solver.time() / (H * H) < T) solver.step();
+        const double Tnow = cv * solver.time() / (H * H);
+        for (const auto& r : sandRows(solver.profile())) {
+            const double err = std::abs(r.porePressure / u0 - closed::terzaghiPressureRatio((c.sandTop() - r.z) / H, Tnow));
+            worst = std::max(worst, err);
+            EXPECT_LE(err, tolerance) << D << "D, T = " << Tnow << ", z = " << r.z;
+        }
+        // lateral uniformity: liquid points at the same height (to 0.1 um), against each other;
+        // within a row the pressure varies with height (each point carries the cell's gradient)
+        const auto& l = solver.liquid();
+        struct Level { double lo = 1e300, hi = -1e300; int points = 0; };
+        std::map<long, Level> level;  // by height in 0.1 um
+        for (std::size_t p = 0; p < l.size(); ++p) {
+            const double z = l.x[p * D + D - 1];
+            if (z <= c.filterLevel() || z >= c.sandTop()) continue;
+            Level& at = level[std::lround(z * 1e7)];
+            at.lo = std::min(at.lo, l.pressure[p]);
+            at.hi = std::max(at.hi, l.pressure[p]);
+            ++at.points;
+        }
+        ASSERT_GT(level.size(), 20u);
+        for (const auto& [key, at] : level) {
+            EXPECT_GE(at.points, 2 * across) << "points at one height side by side";
+            spread = std::max(spread, (at.hi - at.lo) / u0);
+        }
+    }
+    EXPECT_LE(worst, guard) << D << "D: achieved 0.0046 (the 1D run's 0.0061 over its whole run)";
+    EXPECT_LE(spread, 1e-12) << D << "D: a laterally uniform column must stay so (round-off: 3.5e-16)";
+    std::printf("Terzaghi %dD: largest |u/u0 - exact| %.4f, largest lateral spread %.2e u0\n", D, worst, spread);
+}
+}  // namespace
+
+TEST(Terzaghi, In2DAnd3DTheRowsFollowVerruijtAndStayLaterallyUniform) {
+    checkTerzaghiInDimension<2>(4, 0.05, 0.01);
+    checkTerzaghiInDimension<3>(2, 0.05, 0.01);
 }
