@@ -67,11 +67,16 @@ void checkColumnLevels(const CaseConfig& c, const KeyLocations& where) {
         s.fail("water_level", "water_level = " + number(col.waterLevel) + " m is below " + sandTopText +
                                   "; the bed must start submerged: use water_level >= " + number(sandTop) +
                                   " m, or omit it (default: the sand top)");
-    if (col.overflowLevel && !atLeast(*col.overflowLevel, col.waterLevel))
-        s.fail("overflow_level", "overflow_level = " + number(*col.overflowLevel) + " m is below water_level = " +
+    // The overflow holds the water's surface at its level, a node row: the water's top cells
+    // count as full there (solver/PointsToGrid.cpp), so the water must stand at the overflow from
+    // the start, and the level must fall on the grid's lines
+    if (col.overflowLevel && (!atLeast(*col.overflowLevel, col.waterLevel) || above(*col.overflowLevel, col.waterLevel)))
+        s.fail("overflow_level", "overflow_level = " + number(*col.overflowLevel) + " m differs from water_level = " +
                                      number(col.waterLevel) + " m" +
                                      (s.has("water_level") ? "" : " (the default: sand top)") +
-                                     "; expected overflow_level >= water_level");
+                                     "; the overflow holds the water's surface at its level, so the column starts "
+                                     "full to it: expected overflow_level = water_level");
+    if (col.overflowLevel) requireWholeCells(s, "overflow_level", *col.overflowLevel, h);
     if (!above(col.top, col.waterLevel))
         s.fail("top", "top = " + number(col.top) + " m is not above water_level = " + number(col.waterLevel) +
                           " m; the grid must reach above the free surface");

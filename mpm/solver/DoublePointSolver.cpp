@@ -87,6 +87,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         monitorNodes_.push_back(row);
     }
     sandBottomRow_ = roundCells(config.filterLevel(), h);
+    if (config.column.overflowLevel) overflowRow_ = roundCells(*config.column.overflowLevel, h);
 
     initialLiquidMass_ = 0;
     for (Real m : liquid_.mass) initialLiquidMass_ += m;

@@ -127,6 +127,7 @@ private:
     void pointsToGrid();
     void measureSandPorosity();
     void computeForces();
+    void computePressureGradient();
     void solveNodes();
     void switchLiquidState();
     void diffuseFronts();
@@ -183,9 +184,9 @@ private:
     Real gateFlux_ = 0, gatePressure_ = 0;
     Real cumulativeInflow_ = 0, outflowVolume_ = 0;
     Real initialLiquidMass_ = 0, initialGapVolume_ = 0;
-    Real surfacePressure_ = 0;
     std::vector<Index> monitorNodes_;
     Index sandBottomRow_ = 0;
+    Index overflowRow_ = -1;  ///< cell rows below the overflow level (-1: no overflow)
 };
 
 }  // namespace qs

@@ -1,6 +1,7 @@
 // Checkpoint and resume of DoublePointSolver: the persistent state (points, per-node relative
-// speed of the Forchheimer term, chamber gaps, clock and ledger) and the reservoir's own state.
+// speed of the Forchheimer term, the cells' pore-pressure gradient, chamber gaps, clock and ledger) and the reservoir's own state.
 // Per-step scratch (shape functions, cell lists, nodal fields) is rebuilt by the next step.
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -114,6 +115,7 @@ void DoublePointSolver<D>::saveState(CheckpointData& data) const {
     putSet(data, "solid", self.solid_);
     putSet(data, "liquid", self.liquid_);
     data.put("rel_speed", relSpeed_);
+    data.put("pressure_gradient", cellPressureGradient_);
     data.put("gap", const_cast<InflowChamber<D>&>(chamber_).gaps());
     data.put("reservoir", reservoir_.saveState());
     data.put("ledger", std::vector<double>{cumulativeInflow_, chamber_.injectedVolume(), outflowVolume_,
@@ -144,6 +146,15 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     const auto& rs = finiteValues(data, "rel_speed", 0);
     QS_CHECK(rs.size() == relSpeed_.size(), "the checkpoint's grid differs from the case's grid");
     relSpeed_ = rs;
+    // the cells' pore-pressure gradient of the last step, which centres this step's cell pressures
+    // (GridUpdate.cpp); a checkpoint written before it was kept starts from none
+    if (data.has("pressure_gradient")) {
+        const auto& pg = finiteValues(data, "pressure_gradient", 0);
+        QS_CHECK(pg.size() == cellPressureGradient_.size(), "the checkpoint's grid differs from the case's grid");
+        cellPressureGradient_ = pg;
+    } else {
+        std::fill(cellPressureGradient_.begin(), cellPressureGradient_.end(), 0.0);
+    }
     const auto& gaps = finiteValues(data, "gap", 0);
     QS_CHECK(gaps.size() == chamber_.gaps().size(),
              "the checkpoint's chamber has " << gaps.size() << " injection slots, the case's " << chamber_.gaps().size()
