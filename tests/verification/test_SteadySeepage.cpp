@@ -36,6 +36,9 @@ void checkSteadySeepage(const std::string& name, double gradient, double referen
     const double qGate = meanAfter(run.series, t0, [A](const ColumnState& s) { return s.gateFlux / A; });
     EXPECT_NEAR(qMonitor, expected, 0.01 * expected);
     EXPECT_NEAR(qGate, expected, 0.01 * expected);
+    // guards: within 0.035 % is achieved (+0.2 to +0.3 % before the overflow held the surface)
+    EXPECT_NEAR(qMonitor, expected, 1e-3 * expected);
+    EXPECT_NEAR(qGate, expected, 1e-3 * expected);
     std::printf("%s: q monitor %.5g (%+.3f %%), gate %.5g (%+.3f %%), closed form %.5g m/s\n",
                 name.c_str(), qMonitor, 100 * (qMonitor / expected - 1), qGate,
                 100 * (qGate / expected - 1), expected);
@@ -95,6 +98,10 @@ TEST(SteadySeepage, CaseBHoldsItsFilterVelocityForAMinute) {
     EXPECT_NEAR(qGate, expected, 0.01 * expected);
     const auto& last = run.series.back();
     EXPECT_LT(std::abs(last.ledgerResidual), 1e-6 * last.cumulativeInflow);
+    // guards: 0.075 %, -0.02 % and 1.8e-8 are achieved
+    EXPECT_LT(worst, 2.5e-3);
+    EXPECT_NEAR(qGate, expected, 1e-3 * expected);
+    EXPECT_LT(std::abs(last.ledgerResidual), 1e-7 * last.cumulativeInflow);
     EXPECT_LE(most, run.series.front().liquidPoints + 15);
     EXPECT_GE(fewest + 5, run.series.front().liquidPoints);
     std::printf("steady_seepage_B over 60 s: monitor worst %.3f %%, gate mean %+.3f %%, ledger %.2e of the inflow, "

@@ -30,6 +30,9 @@ TEST(TwoLayers, FluxAndHeadProfileMatchLayersInSeries) {
     const double qFilter = meanAfter(run.series, t0, [](const ColumnState& s) { return s.monitorFlux.at(1); });
     EXPECT_NEAR(qSand, q, 0.01 * q);
     EXPECT_NEAR(qFilter, q, 0.01 * q);
+    // guards: -0.03 % is achieved (-0.19 % before the overflow held the surface)
+    EXPECT_NEAR(qSand, q, 1e-3 * q);
+    EXPECT_NEAR(qFilter, q, 1e-3 * q);
 
     // excess head h(z) = (p - rho g (tail - z)) / (rho g), piecewise linear: dh at the base of
     // the filter layer, q L1/K1 at the interface, 0 at the sand top
