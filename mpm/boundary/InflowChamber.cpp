@@ -8,25 +8,37 @@
 namespace qs {
 
 template <int D>
-void InflowChamber<D>::setup(const Grid<D>& grid, Real pointVolume, int pointsPerCell) {
+void InflowChamber<D>::setup(const Grid<D>& grid, Real pointHeight, int pointsPerCell) {
     pointsPerCell_ = pointsPerCell;
     Index slots = 1;
     for (int d = 0; d < D - 1; ++d) slots *= grid.cells(d) * pointsPerCell;
     gaps_.assign(slots, 0.0);
-    pointVolume_ = pointVolume;
+    pointHeight_ = pointHeight;
     scan_.assign(slots, Scan{});
 }
 
 template <int D>
-Real InflowChamber<D>::slotFootprint(const Grid<D>& grid) const {
-    return grid.footprint() / std::pow(Real(pointsPerCell_), D - 1);
+void InflowChamber<D>::slotCentre(const Grid<D>& grid, Index slot, Real* centre) const {
+    const Real spacing = grid.h() / pointsPerCell_;
+    for (int d = 0; d < D - 1; ++d) {
+        const Index n = grid.cells(d) * pointsPerCell_;
+        centre[d] = (slot % n + 0.5) * spacing;
+        slot /= n;
+    }
+}
+
+template <int D>
+Real InflowChamber<D>::slotFootprint(const Grid<D>& grid, Index slot) const {
+    Real centre[D > 1 ? D - 1 : 1] = {};
+    slotCentre(grid, slot, centre);
+    return grid.pointFootprint(centre, pointsPerCell_);
 }
 
 template <int D>
 Real InflowChamber<D>::gapVolume(const Grid<D>& grid) const {
     Real v = 0;
-    for (Real g : gaps_) v += g;
-    return v * slotFootprint(grid);
+    for (Index slot = 0; slot < static_cast<Index>(gaps_.size()); ++slot) v += gaps_[slot] * slotFootprint(grid, slot);
+    return v;
 }
 
 template <int D>
@@ -75,10 +87,7 @@ template <int D>
 void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
                               const std::vector<Index>& liquidCellStart, Real density, Real gravity,
                               Real fallbackPressure) {
-    const int lpc = pointsPerCell_;
-    const Real footprint = slotFootprint(grid);
-    const Real height = pointVolume_ / footprint;
-    const Real spacing = grid.h() / lpc;
+    const Real height = pointHeight_;
     const Index slots = static_cast<Index>(gaps_.size());
     // the lowest liquid point of every slot, from the chamber's two lowest cell rows
     for (auto& s : scan_) s = Scan{};
@@ -86,9 +95,10 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
     for (int d = 0; d < D - 1; ++d) columns *= grid.cells(d);
     for (Index c = 0; c < 2 * columns && c < grid.numCells(); ++c) {
         for (Index p = liquidCellStart[c]; p < liquidCellStart[c + 1]; ++p) {
-            Scan& s = scan_[slotOf(grid, &liquid.x[p * D])];
+            const Index slot = slotOf(grid, &liquid.x[p * D]);
+            Scan& s = scan_[slot];
             const Real z = liquid.x[p * D + D - 1];
-            s.bottom = std::min(s.bottom, z - 0.5 * liquid.volume[p] / footprint);
+            s.bottom = std::min(s.bottom, z - 0.5 * liquid.volume[p] / slotFootprint(grid, slot));
             if (s.ref < 0 || z < liquid.x[s.ref * D + D - 1]) s.ref = p;
         }
     }
@@ -97,12 +107,8 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
         QS_CHECK(s.ref >= 0, "the chamber's injection slot " << slot << " has no liquid in its two lowest cell rows: "
                              "the water left the chamber faster than one cell per step (reduce time.courant)");
         Real centre[D > 1 ? D - 1 : 1] = {};
-        Index rest = slot;
-        for (int d = 0; d < D - 1; ++d) {
-            const Index n = grid.cells(d) * lpc;
-            centre[d] = (rest % n + 0.5) * spacing;
-            rest /= n;
-        }
+        slotCentre(grid, slot, centre);
+        const Real pointVolume = height * slotFootprint(grid, slot);
         Real bottom = std::min(s.bottom, grid.top());
         const Index ref = s.ref;
         while (bottom >= height) {
@@ -111,11 +117,11 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
             liquid.x.push_back(z);
             // the new water moves and is pressed like the water just above it
             for (int d = 0; d < D; ++d) liquid.v.push_back(liquid.v[ref * D + d]);
-            liquid.mass.push_back(density * pointVolume_);
-            liquid.volume.push_back(pointVolume_);
+            liquid.mass.push_back(density * pointVolume);
+            liquid.volume.push_back(pointVolume);
             liquid.pressure.push_back(liquid.pressure[ref] + density * gravity * (liquid.x[ref * D + D - 1] - z));
             liquid.state.push_back(kSubmergedLiquid);
-            injected_ += pointVolume_;
+            injected_ += pointVolume;
             bottom -= height;
         }
         gaps_[slot] = std::max(Real(0), bottom);

@@ -9,9 +9,9 @@
 // that water rising faster under one part of the column than under another is refilled where it
 // left: a slot per column of cells, refilled a row at a time from its lowest point, left voids
 // under the faster part and closed the liquid ledger of two gravels side by side only to 1.5e-3.
-// New points are small, V = V_cell / ceil(liquid_per_cell / n_min) per point along the vertical,
-// so that they do not leave sand cells empty when they get there (larger ones gave -3.5 % +- 7.8 %
-// flux in the prototype).
+// New points are short, h / ceil(liquid_per_cell / n_min) high, so that they do not leave sand
+// cells empty when they get there (larger ones gave -3.5 % +- 7.8 % flux in the prototype); their
+// volume is that height times the slot's footprint (in axisymmetry, 2 pi r_slot wide).
 //
 // Usage, once per step after the points moved:
 //   chamber.inject(grid, liquid, liquidCellStart, density, gravity, fallbackPressure);
@@ -26,9 +26,9 @@ namespace qs {
 template <int D>
 class InflowChamber {
 public:
-    /// pointVolume: m3 of one injected point; pointsPerCell: liquid points per cell and
+    /// pointHeight: m, height of one injected point; pointsPerCell: liquid points per cell and
     /// horizontal axis (the horizontal lattice of an injected row).
-    void setup(const Grid<D>& grid, Real pointVolume, int pointsPerCell);
+    void setup(const Grid<D>& grid, Real pointHeight, int pointsPerCell);
 
     /// Injects new points in every slot whose gap reached one point's height. The cell lists
     /// are those of the step's start (the chamber's lowest two cell rows are scanned).
@@ -39,7 +39,6 @@ public:
 
     Real gapVolume(const Grid<D>& grid) const;          ///< m3, all slots
     Real injectedVolume() const { return injected_; }    ///< m3 since the start
-    Real pointVolume() const { return pointVolume_; }
     /// m, the gap under a gate node: the mean over the slots whose centres lie in the node's
     /// footprint (half a cell either side). Taking one neighbouring column instead shifted the
     /// gap's weight half a cell sideways.
@@ -54,11 +53,12 @@ private:
         Index ref = -1;        ///< the lowest point
     };
     Index slotOf(const Grid<D>& grid, const Real* x) const;
-    Real slotFootprint(const Grid<D>& grid) const;
+    void slotCentre(const Grid<D>& grid, Index slot, Real* centre) const;  ///< horizontal coordinates
+    Real slotFootprint(const Grid<D>& grid, Index slot) const;              ///< m2
 
     std::vector<Real> gaps_;   ///< m, per injection slot
     std::vector<Scan> scan_;   ///< per slot, scratch of inject() (no allocation per step)
-    Real pointVolume_ = 0;
+    Real pointHeight_ = 0;
     int pointsPerCell_ = 1;
     Real injected_ = 0;
 };

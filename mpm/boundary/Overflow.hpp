@@ -51,27 +51,23 @@ void checkSolidBelow(Real zOverflow, const SolidPoints<D>& solid, Real time, Rea
 template <int D>
 Real waterSurfaceFromMass(const Grid<D>& grid, const LiquidPoints<D>& liquid, Real zRef,
                           Real density, int pointsPerCell) {
-    const Real footprint = grid.footprint() / std::pow(Real(pointsPerCell), D - 1);
     Real mass = 0;
     for (std::size_t p = 0; p < liquid.size(); ++p) {
         const Real z = liquid.x[p * D + D - 1];
-        const Real half = 0.5 * liquid.mass[p] / density / footprint;
+        const Real half = 0.5 * liquid.mass[p] / density / grid.pointFootprint(&liquid.x[p * D], pointsPerCell);
         if (z + half <= zRef) continue;
         mass += std::min(Real(1), (z + half - zRef) / (2 * half)) * liquid.mass[p];
     }
     if (mass == 0) return 0.0;
-    Real columns = 1;
-    for (int d = 0; d < D - 1; ++d) columns *= grid.cells(d);
-    return zRef + mass / (density * grid.footprint() * columns);
+    return zRef + mass / (density * grid.crossSection());
 }
 
 /// m, top of the highest solid point (its extent from its volume), at least the filter level.
 template <int D>
 Real sandSurfaceOf(const Grid<D>& grid, const SolidPoints<D>& solid, Real filterLevel, int pointsPerCell) {
-    const Real footprint = grid.footprint() / std::pow(Real(pointsPerCell), D - 1);
     Real top = filterLevel;
     for (std::size_t p = 0; p < solid.size(); ++p)
-        top = std::max(top, solid.x[p * D + D - 1] + 0.5 * solid.volume[p] / footprint);
+        top = std::max(top, solid.x[p * D + D - 1] + 0.5 * solid.volume[p] / grid.pointFootprint(&solid.x[p * D], pointsPerCell));
     return top;
 }
 

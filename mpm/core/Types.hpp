@@ -8,6 +8,8 @@
 #include <array>
 #include <cstdint>
 
+#include "core/Constants.hpp"
+
 namespace qs {
 
 using Real = double;

@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/Error.hpp"
+#include "core/Constants.hpp"
 #include "physics/ClosedForms.hpp"
 
 namespace qs {
@@ -13,7 +14,7 @@ InertialTubeModel::InertialTubeModel(const InertialTubeParameters& p) : p_(p) {
     QS_CHECK(p.minorLoss == 0, "inertial tube: minor losses are not modelled; set them to 0");
     resistance_ = closed::tubeResistance(p.tubeDiameter, p.tubeLength, p.liquidDensity, p.gravity, p.viscosity);
     const double length = p.inertialLength < 0 ? p.tubeLength : p.inertialLength;
-    inertance_ = length / (M_PI * p.tubeDiameter * p.tubeDiameter / 4);
+    inertance_ = length / (kPi * p.tubeDiameter * p.tubeDiameter / 4);
     head_ = trialHead_ = p.initialHead;
 }
 

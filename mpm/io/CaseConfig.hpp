@@ -22,6 +22,8 @@
 namespace qs {
 
 enum class ShapeFunctionKind { Linear, Gimp };
+/// plane: 2D plane strain (or 1D, 3D); axisymmetric: 2D (r, z), the column a cylinder of radius width
+enum class GridGeometry { Plane, Axisymmetric };
 enum class PermeabilityMode { Constant, KozenyCarman, KozenyCarmanScaled };
 enum class ConstitutiveModelKind { LinearElastic, MohrCoulomb };
 enum class InitialStress { K0, Zero };
@@ -33,9 +35,12 @@ enum class CouplingKind { Explicit, Implicit };
 struct GridConfig {
     int dimension = 1;                 ///< 1, 2 or 3 (only 1 is verified)
     double cellSize = 0.0;             ///< m, edge of the square/cubic cells
-    double width = 0.0;                ///< m, horizontal extent in 2D/3D (ignored in 1D)
+    double width = 0.0;                ///< m, horizontal extent in 2D/3D (ignored in 1D); the
+                                       ///<    radius in axisymmetry
     double crossSectionArea = 0.0;     ///< m2, column cross-section (1D: the area of every cell;
-                                       ///<     2D: area/width is the out-of-plane thickness)
+                                       ///<     2D plane: area/width is the out-of-plane thickness;
+                                       ///<     3D: width^2; axisymmetric: pi width^2)
+    GridGeometry geometry = GridGeometry::Plane;
     ShapeFunctionKind shapeFunctions = ShapeFunctionKind::Linear;
 };
 

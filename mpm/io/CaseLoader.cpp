@@ -17,6 +17,7 @@
 #include <utility>
 #include <vector>
 
+#include "core/Constants.hpp"
 #include "core/Error.hpp"
 #include "io/CaseRules.hpp"
 #include "io/DidYouMean.hpp"
@@ -38,7 +39,7 @@ constexpr const char* kRootKeys[] = {"title",  "grid",      "column",  "material
                                      "gate",   "reservoir", "coupling", "time",   "monitors",
                                      "output"};
 constexpr const char* kGridKeys[] = {"dimension", "cell_size", "width", "cross_section_area",
-                                     "shape_functions"};
+                                     "shape_functions", "geometry"};
 constexpr const char* kColumnKeys[] = {"chamber_height", "water_level", "overflow_level", "top"};
 constexpr const char* kMaterialKeys[] = {
     "model",          "grain_density", "porosity",       "max_porosity",    "min_porosity",
@@ -110,6 +111,8 @@ constexpr double kMinViscosity = 1e-6;
 
 const Options<ShapeFunctionKind> kShapeFunctionOptions = {{"linear", ShapeFunctionKind::Linear},
                                                           {"gimp", ShapeFunctionKind::Gimp}};
+const Options<GridGeometry> kGeometryOptions = {{"plane", GridGeometry::Plane},
+                                                {"axisymmetric", GridGeometry::Axisymmetric}};
 const Options<ConstitutiveModelKind> kModelOptions = {
     {"linear_elastic", ConstitutiveModelKind::LinearElastic},
     {"mohr_coulomb", ConstitutiveModelKind::MohrCoulomb}};
@@ -195,20 +198,31 @@ private:
         GridConfig& g = c_.grid;
         g.dimension = s.integer("dimension", 1, between(1, false, 3, false));
         g.cellSize = s.requiredNumber("cell_size", positive("m"), "edge of a grid cell");
+        g.geometry = s.choice("geometry", GridGeometry::Plane, kGeometryOptions);
+        const bool axisymmetric = g.geometry == GridGeometry::Axisymmetric;
+        if (axisymmetric && g.dimension != 2)
+            s.fail("geometry", "geometry = \"axisymmetric\" is a 2D (r, z) grid: it needs grid.dimension = 2, not " +
+                                   std::to_string(g.dimension));
         if (g.dimension >= 2) {
             g.width = s.requiredNumber("width", positive("m"),
-                                       "horizontal extent of the grid, required in 2D and 3D");
+                                       axisymmetric ? "the column's radius, required in axisymmetry"
+                                                    : "horizontal extent of the grid, required in 2D and 3D");
         } else {
             g.width = s.optionalNumber("width", 0.0, positive("m"), "ignored in 1D");
         }
-        if (g.dimension == 3) {
-            // The square column's cross-section follows from its width; a given one must agree.
-            const double square = g.width * g.width;
-            const auto given = s.optionalNumber("cross_section_area", positive("m2"), "= width^2 in 3D, may be left out");
-            if (given && std::abs(*given - square) > 1e-9 * square)
-                s.fail("cross_section_area", "value " + number(*given) + " m2 disagrees with the 3D column's width^2 = " +
-                                                 number(square) + " m2 (leave it out: in 3D it follows from grid.width)");
-            g.crossSectionArea = square;
+        if (g.dimension == 3 || axisymmetric) {
+            // The square column's cross-section follows from its width, the cylinder's from its
+            // radius; a given one must agree.
+            const double area = axisymmetric ? kPi * g.width * g.width : g.width * g.width;
+            const char* rule = axisymmetric ? "pi width^2 in axisymmetry" : "width^2 in 3D";
+            const auto given = s.optionalNumber("cross_section_area", positive("m2"),
+                                                std::string("= ") + rule + ", may be left out");
+            if (given && std::abs(*given - area) > 1e-9 * area)
+                s.fail("cross_section_area", "value " + number(*given) + " m2 disagrees with " +
+                                                 (axisymmetric ? "the cylinder's pi width^2 = " : "the 3D column's width^2 = ") +
+                                                 number(area) + " m2 (leave it out: " +
+                                                 (axisymmetric ? "in axisymmetry" : "in 3D") + " it follows from grid.width)");
+            g.crossSectionArea = area;
         } else {
             g.crossSectionArea =
                 s.requiredNumber("cross_section_area", positive("m2"), "cross-section of the column");
@@ -294,7 +308,7 @@ private:
                                                 between(0, false, m.frictionAngle, false, "deg"),
                                                 "at most friction_angle");
             m.cohesion = s.optionalNumber("cohesion", 0.0, nonNegative("Pa"));
-            const double apex = m.cohesion / std::tan(m.frictionAngle * 3.14159265358979323846 / 180.0);
+            const double apex = m.cohesion / std::tan(m.frictionAngle * kPi / 180.0);
             m.tensileStrength = s.optionalNumber("tensile_strength", 0.0, between(0, false, apex, false, "Pa"),
                                                  "at most the apex c cot(phi) = " + number(apex) + " Pa");
         } else {

@@ -10,7 +10,7 @@ namespace qs {
 
 namespace {
 
-constexpr Real kDegree = 3.14159265358979323846 / 180.0;
+constexpr Real kDegree = kPi / 180.0;
 
 /// y = D x with the principal elastic matrix D = lambda 1 1^T + 2 G I.
 inline void applyElastic(const LinearElastic& e, const Real* x, Real* y) {

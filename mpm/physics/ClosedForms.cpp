@@ -1,5 +1,6 @@
 #include "physics/ClosedForms.hpp"
 
+#include "core/Constants.hpp"
 #include "core/Error.hpp"
 
 #include <algorithm>
@@ -9,7 +10,6 @@ namespace qs::closed {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 // Kozeny-Carman blows up as n -> 1; physics.md caps n at 0.95 inside the formula so a fully
 // fluidised point keeps a finite (large) permeability instead of an infinite one.

@@ -3,13 +3,13 @@
 #include <cmath>
 #include <random>
 
+#include "core/Constants.hpp"
 #include "core/Error.hpp"
 
 namespace qs {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 
 /// A uniform deviate in (0, 1] from the top 53 bits: the same on every platform.
 double uniformOpen(std::mt19937_64& engine) { return (static_cast<double>(engine() >> 11) + 1.0) * 0x1.0p-53; }

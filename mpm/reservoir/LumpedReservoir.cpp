@@ -1,5 +1,6 @@
 #include "reservoir/LumpedReservoir.hpp"
 
+#include "core/Constants.hpp"
 #include "core/Error.hpp"
 #include "physics/ClosedForms.hpp"
 
@@ -10,7 +11,6 @@
 namespace qs {
 
 namespace {
-constexpr double kPi = 3.14159265358979323846;
 }
 
 LumpedReservoir::LumpedReservoir(const LumpedReservoirParameters& parameters)

@@ -16,13 +16,13 @@ namespace qs {
 namespace {
 
 /// Calls emit(x, V) for a regular lattice filling the slab z0 < z < z1: `perCell` points per
-/// horizontal axis in every cell, nz layers along the vertical.
+/// horizontal axis in every cell, nz layers along the vertical. V is the volume the point stands
+/// for (in axisymmetry the ring 2 pi r around the axis).
 template <int D, class F>
 void forEachLatticePoint(const Grid<D>& grid, int perCell, Real z0, Real z1, Index nz, F&& emit) {
     Index nh = 1;
     for (int d = 0; d < D - 1; ++d) nh *= grid.cells(d) * perCell;
     const Real dz = (z1 - z0) / nz;
-    const Real footprint = grid.footprint() / std::pow(Real(perCell), D - 1);
     const Real spacing = grid.h() / perCell;
     Vec<D> x;
     for (Index iz = 0; iz < nz; ++iz) {
@@ -34,7 +34,7 @@ void forEachLatticePoint(const Grid<D>& grid, int perCell, Real z0, Real z1, Ind
                 rest /= n;
             }
             x[D - 1] = z0 + (iz + 0.5) * dz;
-            emit(x, footprint * dz);
+            emit(x, grid.pointFootprint(&x[0], perCell) * dz);
         }
     }
 }

@@ -46,7 +46,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
     IVec<D> cells;
     for (int d = 0; d < D - 1; ++d) cells[d] = roundCells(config.grid.width, h);
     cells[D - 1] = roundCells(config.column.top, h);
-    grid_ = Grid<D>(cells, h, config.grid.crossSectionArea);
+    grid_ = Grid<D>(cells, h, config.grid.crossSectionArea, config.grid.geometry == GridGeometry::Axisymmetric);
 
     waveSpeed_ = fastestWaveSpeed(config);
     for (const auto& m : config.materials) {
@@ -76,11 +76,8 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
     buildColumn(config, grid_, materials_, solid_, liquid_);
     allocate();
     masks_.build(grid_, config);
-    // new points as small as the free-water points, so they do not leave sand cells empty
-    chamber_.setup(grid_,
-                   grid_.cellVolume() / freeWaterPointsPerCell(config) /
-                       std::pow(Real(config.points.liquidPerCell), D - 1),
-                   config.points.liquidPerCell);
+    // new points as short as the free-water points, so they do not leave sand cells empty
+    chamber_.setup(grid_, h / freeWaterPointsPerCell(config), config.points.liquidPerCell);
 
     for (const auto& m : config.monitors) {
         const Index row = std::clamp<Index>(std::llround(m.elevation / h), 0, grid_.nodes(D - 1) - 1);

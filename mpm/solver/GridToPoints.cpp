@@ -21,6 +21,7 @@ void DoublePointSolver<D>::gridToPoints() {
     const Real dt = dt_;
     Real extent[D];  // points stay inside the grid, axis by axis
     for (int d = 0; d < D; ++d) extent[d] = grid_.cells(d) * grid_.h();
+    const bool axisymmetric = grid_.axisymmetric();
     forAll(static_cast<Index>(solid_.size()), [&](Index p) {
         Real dv[D] = {}, vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
         bool diffuses = true;
@@ -37,6 +38,7 @@ void DoublePointSolver<D>::gridToPoints() {
             if (N > 0 && !diffusionNode_[i]) diffuses = false;
         });
         const Index cell = solid_.shape.cell[p];
+        const Real radius = solid_.x[p * D];  // where the shape functions were taken
         for (int d = 0; d < D; ++d) {
             solid_.v[p * D + d] += dv[d];  // FLIP: PIC would smear the jumps at porosity interfaces
             // the front diffusion moves the point; it is not part of its (FLIP) velocity
@@ -47,6 +49,8 @@ void DoublePointSolver<D>::gridToPoints() {
         for (int d = 0; d < D; ++d)
             for (int e = d; e < D; ++e)
                 dEps[voigt(axis3<D>(d), axis3<D>(e))] = 0.5 * dt * (L[d][e] + L[e][d]);
+        // axisymmetry: the hoop strain v_r / r at the point's own radius (Voigt yy is theta)
+        if (axisymmetric) dEps[1] = dt * vNew[0] / radius;
         const Real dVol = dEps[0] + dEps[1] + dEps[2];
         const auto& mat = materials_[solid_.material[p]];
         Real* s = &solid_.stress[p * 6];
@@ -110,6 +114,7 @@ void DoublePointSolver<D>::gridToPoints() {
             if (N > 0 && !diffusionNode_[i]) diffuses = false;
         });
         const Real k = diffuses ? cellDiffusivity_[liquid_.shape.cell[p]] / std::max(Real(1e-3), 1 - sand) : 0;
+        if (axisymmetric) div += vNew[0] / liquid_.x[p * D];  // the hoop strain rate v_r / r
         for (int d = 0; d < D; ++d) {
             liquid_.v[p * D + d] += dv[d];
             // the liquid's share of the front diffusion: the mixture's volume flux stays
@@ -138,13 +143,17 @@ void DoublePointSolver<D>::updatePressure() {
     const Real KL = config_.liquid.bulkModulus, dt = dt_;
     const Real pMin = config_.liquid.cavitationPressure;
     const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
+    const bool axisymmetric = grid_.axisymmetric();
     forAll(grid_.numCells(), [&](Index c) {
         if (liquidCellStart_[c + 1] == liquidCellStart_[c]) return;
         Real div = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             const Real ni = porosity_[i];
-            for (int a = 0; a < D; ++a)
-                div += grid_.centreGradient(corner, a) * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
+            for (int a = 0; a < D; ++a) {
+                // axisymmetry: div Phi gains Phi_r / r, N_i(x_c) / r_c at the cell's centre
+                const Real gN = grid_.centreGradient(corner, a) + (axisymmetric && a == 0 ? hoopWeight(c) : 0.0);
+                div += gN * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
+            }
         });
         // the storage equation taken at a fixed place (K_L is a numerical stiffness, so this is
         // artificial compressibility): the liquid points carry the field along its gradient as

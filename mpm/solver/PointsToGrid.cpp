@@ -90,8 +90,9 @@ void DoublePointSolver<D>::classifyCells() {
         const bool above = (row + 1 < rows && liquidCellStart_[c + up + 1] > liquidCellStart_[c + up]) ||
                            (row + 1 == overflowRow_ && holdsLiquid);
         cellSubmerged_[c] = above;
-        const Real scale = above && cellLiquidVolume_[c] > 0 ? grid_.cellVolume() / cellLiquidVolume_[c] : 1.0;
-        const bool thin = cellLiquidVolume_[c] < config_.liquid.freeSurfaceFilling * grid_.cellVolume();
+        const Real volume = grid_.cellVolume(c);
+        const Real scale = above && cellLiquidVolume_[c] > 0 ? volume / cellLiquidVolume_[c] : 1.0;
+        const bool thin = cellLiquidVolume_[c] < config_.liquid.freeSurfaceFilling * volume;
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
             liquid_.weight[p] = liquid_.volume[p] * scale;
             liquid_.state[p] = (!above && thin) ? kFreeSurfaceLiquid : kSubmergedLiquid;
@@ -133,6 +134,7 @@ void DoublePointSolver<D>::pointsToGrid() {
     // present, would act on that sliver of mass and drive it wildly (found as a 10 % slower,
     // and with one point per cell a stalled, consolidation above the closed base).
     const Index firstSolidNode = sandBottomRow_ * grid_.nodeStride(D - 1);
+    const bool axisymmetric = grid_.axisymmetric();
     forEachPointColoured(grid_, solidCellStart_, [&](Index p) {
         const Real m = solid_.mass[p], V = solid_.volume[p];
         const auto& mat = materials_[solid_.material[p]];
@@ -143,6 +145,9 @@ void DoublePointSolver<D>::pointsToGrid() {
         const Real b = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
         const Real* s = &solid_.stress[p * 6];
         const Real* v = &solid_.v[p * D];
+        // axisymmetry: the hoop stress pulls the ring towards the axis, sigma_tt N_i / r on the
+        // radial component (Voigt yy is the hoop direction, theta)
+        const Real hoop = axisymmetric ? s[1] * V / solid_.x[p * D] : 0.0;
         forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
                       &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             if (i < firstSolidNode) return;
@@ -156,6 +161,7 @@ void DoublePointSolver<D>::pointsToGrid() {
                 for (int e = 0; e < D; ++e) f += s[voigt(axis3<D>(d), axis3<D>(e))] * gradN[e];
                 forceS_[i * D + d] -= f * V;
             }
+            if (axisymmetric) forceS_[i * D] -= hoop * N;
         });
     });
     forEachPointColoured(grid_, liquidCellStart_, [&](Index p) {
@@ -170,13 +176,13 @@ void DoublePointSolver<D>::pointsToGrid() {
 
     // Nodal porosity n_i = 1 - (sum N m_s / rho_s) / V_i with V_i = integral of N_i over the
     // active cells only: over the whole grid the sand surface would look far too porous.
-    const Real cellShare = grid_.cellVolume() / (1 << D);
     const Real mu = config_.liquid.viscosity, rhoL = config_.liquid.density;
     forAll(grid_.numNodes(), [&](Index i) {
         Real vol = 0, solidSide = 0;
-        grid_.forEachCellOfNode(i, [&](Index cell, int) {
-            if (cellActive_[cell]) vol += cellShare;
-            if (solidCellStart_[cell + 1] > solidCellStart_[cell]) solidSide += cellShare;
+        grid_.forEachCellOfNode(i, [&](Index cell, int corner) {
+            const Real share = grid_.cellShare(cell, corner);
+            if (cellActive_[cell]) vol += share;
+            if (solidCellStart_[cell + 1] > solidCellStart_[cell]) solidSide += share;
         });
         nodeVolume_[i] = vol;
         const Real por = vol > 0 ? 1 - solidVolume_[i] / vol : 1.0;

@@ -81,7 +81,7 @@ void checkTerzaghiInDimension(int across, double tolerance, double guard) {
     const double KL = c.liquid.bulkModulus, n = sand.porosity;
     const double u0 = c.loads.surcharge * closed::undrainedPressureRatio(Eoed, n, KL);
     const double cv = (sand.permeability.value / c.liquid.viscosity) / (1 / Eoed + n / KL);
-    const double H = c.sandTop() - c.filterLevel(), h = c.grid.cellSize;
+    const double H = c.sandTop() - c.filterLevel();
     auto reservoir = makeReservoirModel(c);
     DoublePointSolver<D> solver(c, *reservoir);
     double worst = 0, spread = 0;

@@ -168,7 +168,7 @@ cross_section_area = 5.0014e-3
 shape_functions = "gimp"
 [column]
 chamber_height = 0.02
-water_level = 0.25
+water_level = 0.26
 overflow_level = 0.26
 top = 0.3
 [materials.sand]
@@ -471,8 +471,12 @@ TEST(CaseLoader, WaterBelowSandTopAndTopBelowWaterAreRejected) {
     const std::string overflow =
         replaced(kMinimal, "top = 0.2", "water_level = 0.15\noverflow_level = 0.14\ntop = 0.2");
     expectError(overflow, "column.overflow_level", lineOf(overflow, "overflow_level"));
-    const std::string overTop = replaced(kMinimal, "top = 0.2", "overflow_level = 0.2\ntop = 0.2");
+    const std::string overTop = replaced(kMinimal, "top = 0.2", "water_level = 0.2\noverflow_level = 0.2\ntop = 0.2");
     expectError(overTop, "column.top", lineOf(overTop, "top = 0.2"));
+    // the overflow holds the water's surface: it starts at the water level, on a node row
+    const std::string above = replaced(kMinimal, "top = 0.2", "water_level = 0.14\noverflow_level = 0.16\ntop = 0.2");
+    EXPECT_TRUE(contains(expectError(above, "column.overflow_level", lineOf(above, "overflow_level")),
+                         "expected overflow_level = water_level"));
 }
 
 TEST(CaseLoader, PermeabilityInMetresPerSecondIsRejected) {

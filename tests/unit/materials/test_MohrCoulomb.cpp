@@ -14,7 +14,6 @@ using namespace qs;
 
 namespace {
 
-constexpr Real kPi = 3.14159265358979323846;
 constexpr Real E = 1e6, nu = 0.3;
 
 /// f of all six orderings of the principal stresses (the full Mohr-Coulomb hexagonal cone), with
