@@ -83,7 +83,14 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
     const double KL = config.liquid.bulkModulus, h = config.grid.cellSize;
     out << std::setprecision(4);
     out << "case " << config.caseDirectory << (config.title.empty() ? "" : ": " + config.title) << "\n";
-    out << "geometry: " << config.grid.dimension << "D, cell " << h << " m, gate z = 0, filter "
+    out << "geometry: " << config.grid.dimension << "D";
+    if (config.grid.geometry == GridGeometry::Axisymmetric)
+        out << " axisymmetric (r, z), radius " << config.grid.width << " m";
+    else if (config.grid.dimension == 2)
+        out << " plane strain, width " << config.grid.width << " m";
+    else if (config.grid.dimension == 3)
+        out << ", " << config.grid.width << " m x " << config.grid.width << " m";
+    out << ", cross-section " << config.grid.crossSectionArea << " m2, cell " << h << " m, gate z = 0, filter "
         << config.filterLevel() << " m, sand top " << config.sandTop() << " m, water "
         << config.column.waterLevel << " m";
     if (config.column.overflowLevel) out << ", overflow " << *config.column.overflowLevel << " m";
