@@ -57,25 +57,10 @@ struct BoundaryMasks {
     }
 };
 
-/// m2, the share of a horizontal plane carried by one node of it (the whole area in 1D): the
-/// integral of the node's shape function over the plane. In axisymmetry 2 pi times the integral
-/// of N r dr: 2 pi h r_i inside, 2 pi h^2 / 6 on the axis, pi h (R - h/3) at the wall (they add
-/// up to pi R^2).
+/// m2, the share of a horizontal plane carried by one node of it (Grid::nodeFootprint).
 template <int D>
 Real nodeFootprint(const Grid<D>& grid, Index node) {
-    const IVec<D> n = grid.nodeCoords(node);
-    if (grid.axisymmetric()) {
-        const Real h = grid.h(), r = n[0] * h;
-        if (n[0] == 0) return 2 * kPi * h * h / 6;
-        if (n[0] == grid.nodes(0) - 1) return kPi * h * (r - h / 3);
-        return 2 * kPi * h * r;
-    }
-    Real a = grid.extentAt(0);
-    for (int d = 0; d < D - 1; ++d) {
-        const bool edge = n[d] == 0 || n[d] == grid.nodes(d) - 1;
-        a *= edge ? 0.5 * grid.h() : grid.h();
-    }
-    return a;
+    return grid.nodeFootprint(node);
 }
 
 /// Adds the force of a uniform vertical pressure acting downwards on a horizontal surface at

@@ -9,8 +9,17 @@
 // revolution: every volume and area is taken over the whole turn, dV = 2 pi r dr dz, so masses,
 // fluxes and the ledger keep their 3D units. What changes with the radius is the extent normal to
 // the grid, extentAt(r) = 2 pi r (the plane grid's out-of-plane thickness), and with it the
-// cells' volumes and the nodes' shares of them (exact integrals of the bilinear shape functions
-// times 2 pi r). The hoop terms of the physics live in the solver's phases.
+// cells' volumes, the nodes' shares of them and of the horizontal faces, and the divergence
+// weights. The hoop terms of the physics live in the solver's phases.
+//
+// Those shares are integrals of N_i r over a cell, and the grid takes them with the rule the
+// material points take them with: m points across a cell, each weighted by its own radius. The
+// inner node of a cell then gets (h/2)(r_c - d) and the outer one (h/2)(r_c + d) of the cell's
+// radial extent, d = (h/6)(1 - 1/m^2) (the exact integral is the limit d = h/6). The nodes' solid
+// volumes, sums over the points, and their volumes then agree in a uniform bed: with the exact
+// integral the node on the axis saw 12.5 % more solid than volume (n = 0.30 for 0.38, 2 points
+// per cell), and a laterally uniform consolidation settled 10 um differently at the axis. Inside
+// the grid the two rules agree (their errors cancel between a node's two cells).
 #include <cmath>
 
 #include "core/Error.hpp"
@@ -24,8 +33,10 @@ public:
     Grid() = default;
     /// cells: number of cells per axis (>= 2 each); h: cell edge (m); crossSection: column area (m2),
     /// used as the out-of-plane extent of 1D and 2D plane grids; axisymmetric: a 2D (r, z) grid.
-    Grid(const IVec<D>& cells, Real h, Real crossSection, bool axisymmetric = false)
+    /// pointsPerCell: in axisymmetry, the solid points across a cell (the radial quadrature rule).
+    Grid(const IVec<D>& cells, Real h, Real crossSection, bool axisymmetric = false, int pointsPerCell = 2)
         : cells_(cells), h_(h), axisymmetric_(axisymmetric) {
+        radialOffset_ = axisymmetric ? h / 6 * (1 - 1.0 / (pointsPerCell * pointsPerCell)) : 0.0;
         QS_CHECK(!axisymmetric || D == 2, "an axisymmetric grid is two-dimensional (r, z)");
         numCells_ = 1;
         numNodes_ = 1;
@@ -42,6 +53,9 @@ public:
         for (int d = 0; d < D - 1; ++d) horizontal *= cells[d] * h;
         outOfPlane_ = (D == 3) ? 1.0 : crossSection / (D == 1 ? 1.0 : horizontal);
         crossSection_ = axisymmetric ? kPi * horizontal * horizontal : horizontal * outOfPlane_;
+        Real hD = 1;
+        for (int d = 0; d < D; ++d) hD *= h;
+        planeCellVolume_ = hD * outOfPlane_;
     }
 
     Real h() const { return h_; }
@@ -60,16 +74,31 @@ public:
     Real crossSection() const { return crossSection_; }
     /// m3, volume of cell c (in axisymmetry the ring 2 pi r_c h^2).
     Real cellVolume(Index c) const {
-        const Real v = std::pow(h_, D) * outOfPlane_;
-        return axisymmetric_ ? 2 * kPi * cellCentre(c % cells_[0]) * h_ * h_ : v;
+        return axisymmetric_ ? 2 * kPi * cellCentre(c % cells_[0]) * h_ * h_ : planeCellVolume_;
     }
     /// m3, the integral of a corner node's shape function over cell c: a 2^-D share of its volume
     /// on plane grids; in axisymmetry the node on the cell's inner radius carries less than the
-    /// outer one, (pi h^2 / 2)(r_c -+ h/6), so that a uniform material sums to its true volume.
+    /// outer one, (pi h^2 / 2)(r_c -+ d) (d: the radial rule above).
     Real cellShare(Index c, int corner) const {
         if (!axisymmetric_) return cellVolume(c) / (1 << D);
         const Real rc = cellCentre(c % cells_[0]);
-        return 0.5 * kPi * h_ * h_ * (rc + ((corner & 1) ? h_ : -h_) / 6);
+        return 0.5 * kPi * h_ * h_ * (rc + ((corner & 1) ? radialOffset_ : -radialOffset_));
+    }
+    /// m2, the share of a horizontal plane carried by a node of it (the whole area in 1D): the
+    /// integral of its shape function over the plane. In axisymmetry 2 pi h r_i inside,
+    /// pi h (h/2 - d) on the axis and pi h (R - h/2 + d) at the wall (they add up to pi R^2).
+    Real nodeFootprint(Index node) const {
+        Index n[D];
+        for (int d = 0; d < D; ++d) { n[d] = node % nodes_[d]; node /= nodes_[d]; }
+        if (axisymmetric_) {
+            const Real r = n[0] * h_;
+            if (n[0] == 0) return kPi * h_ * (0.5 * h_ - radialOffset_);
+            if (n[0] == nodes_[0] - 1) return kPi * h_ * (r - 0.5 * h_ + radialOffset_);
+            return 2 * kPi * h_ * r;
+        }
+        Real a = outOfPlane_;
+        for (int d = 0; d < D - 1; ++d) a *= (n[d] == 0 || n[d] == nodes_[d] - 1) ? 0.5 * h_ : h_;
+        return a;
     }
     /// m2, the horizontal area a point at x stands for when `perCell` points share a cell's width
     /// along each horizontal axis (the whole cross-section in 1D).
@@ -144,13 +173,33 @@ public:
             if (d != a) g *= 0.5;
         return g;
     }
+    /// 1/m, the weight of a corner node's velocity component a in the divergence of cell c:
+    /// (1/V_c) times the integral over the cell of div(N_i e_a), so that
+    ///   div_c = sum_i sum_a divergenceWeight(c, corner_i, a) v_i,a
+    /// is the cell's mean divergence of the bilinear field, and its transpose (the pressure
+    /// force, p_c V_c times the weight) is the integral of p_c div(N_i e_a). On plane grids it is
+    /// grad N_i at the cell's centre. In axisymmetry the radial weight takes in the hoop part
+    /// v_r / r and becomes (+r_out or -r_in) / (2 h r_c), the pressure on the cell's outer and
+    /// inner cylinder faces; the vertical one weighs the inner node by r_c - d and the outer by
+    /// r_c + d (their shares of the horizontal faces, the radial rule above), matching the nodes'
+    /// volumes and the gate's footprints. (The centre rule there, +-1/(2h), left the nodes on the
+    /// axis and at the wall out of hydrostatic balance: a geostatic cylinder leaked at 16 times
+    /// the bound.)
+    Real divergenceWeight(Index c, int corner, int a) const {
+        if (!axisymmetric_) return centreGradient(corner, a);
+        const Index i = c % cells_[0];
+        const Real rc = cellCentre(i), outer = corner & 1;
+        if (a == 0) return (outer ? rc + 0.5 * h_ : -(rc - 0.5 * h_)) / (2 * h_ * rc);
+        const Real up = (corner >> 1) & 1 ? 1.0 : -1.0;
+        return up * (rc + (outer ? radialOffset_ : -radialOffset_)) / (2 * h_ * rc);
+    }
     Real nodePosition(Index nodeCoord) const { return nodeCoord * h_; }
     Real cellCentre(Index cellCoord) const { return (cellCoord + 0.5) * h_; }
 
 private:
     IVec<D> cells_{}, nodes_{}, cellStride_{}, nodeStride_{};
     Index numCells_ = 0, numNodes_ = 0;
-    Real h_ = 0, outOfPlane_ = 1, crossSection_ = 0;
+    Real h_ = 0, outOfPlane_ = 1, crossSection_ = 0, radialOffset_ = 0, planeCellVolume_ = 0;
     bool axisymmetric_ = false;
 };
 

@@ -46,7 +46,8 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
     IVec<D> cells;
     for (int d = 0; d < D - 1; ++d) cells[d] = roundCells(config.grid.width, h);
     cells[D - 1] = roundCells(config.column.top, h);
-    grid_ = Grid<D>(cells, h, config.grid.crossSectionArea, config.grid.geometry == GridGeometry::Axisymmetric);
+    grid_ = Grid<D>(cells, h, config.grid.crossSectionArea, config.grid.geometry == GridGeometry::Axisymmetric,
+                    config.points.solidPerCell);
 
     waveSpeed_ = fastestWaveSpeed(config);
     for (const auto& m : config.materials) {

@@ -148,8 +148,6 @@ private:
     Real footprintShare(Index node, const std::optional<HorizontalRange>& x,
                         const std::optional<HorizontalRange>& y) const;
     bool liquidFilled(Index node) const;
-    /// 1/m, N_i(x_c) / r_c: the hoop part of a cell's divergence per node, in axisymmetry
-    Real hoopWeight(Index cell) const { return 1.0 / ((1 << D) * grid_.cellCentre(cell % grid_.cells(0))); }
     Real gateVelocityNow() const;
     void uniformGateVelocity(Real resistance);
 

@@ -143,15 +143,13 @@ void DoublePointSolver<D>::updatePressure() {
     const Real KL = config_.liquid.bulkModulus, dt = dt_;
     const Real pMin = config_.liquid.cavitationPressure;
     const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
-    const bool axisymmetric = grid_.axisymmetric();
     forAll(grid_.numCells(), [&](Index c) {
         if (liquidCellStart_[c + 1] == liquidCellStart_[c]) return;
         Real div = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             const Real ni = porosity_[i];
             for (int a = 0; a < D; ++a) {
-                // axisymmetry: div Phi gains Phi_r / r, N_i(x_c) / r_c at the cell's centre
-                const Real gN = grid_.centreGradient(corner, a) + (axisymmetric && a == 0 ? hoopWeight(c) : 0.0);
+                const Real gN = grid_.divergenceWeight(c, corner, a);  // with the hoop part in axisymmetry
                 div += gN * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
             }
         });

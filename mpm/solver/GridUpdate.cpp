@@ -80,9 +80,8 @@ void DoublePointSolver<D>::computeForces() {
     // The centre-rule form n_c grad N_i + N_i grad n_c, used before, is the same in 1D; in 2D and
     // 3D it is not the transpose where the porosity varies sideways, and two gravels side by side
     // then carried fluxes 3 % (fine) and 1 % (coarse) off their own Darcy-Forchheimer values.
-    // In axisymmetry the divergence has the hoop part Phi_r / r, and so its transpose a radial
-    // force N_i(x_c) / r_c: a uniform pressure then pushes no interior node sideways.
-    const bool axisymmetric = grid_.axisymmetric();
+    // (grid/Grid.hpp, divergenceWeight: in axisymmetry the divergence has the hoop part Phi_r / r,
+    // and so its transpose a radial force; a uniform pressure then pushes no node sideways)
     forAll(grid_.numNodes(), [&](Index i) {
         Real fL[D] = {}, fS[D] = {};
         const Real ni = porosity_[i];
@@ -90,7 +89,7 @@ void DoublePointSolver<D>::computeForces() {
             const Real pV = cellPressure_[cell] * cellWeight_[cell];
             if (pV == 0) return;
             for (int a = 0; a < D; ++a) {
-                const Real gN = grid_.centreGradient(corner, a) + (axisymmetric && a == 0 ? hoopWeight(cell) : 0.0);
+                const Real gN = grid_.divergenceWeight(cell, corner, a);
                 fL[a] += pV * ni * gN;
                 fS[a] += pV * (1 - ni) * gN;
             }

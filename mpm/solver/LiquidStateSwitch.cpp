@@ -36,9 +36,7 @@ void DoublePointSolver<D>::switchLiquidState() {
         // div v_S at the cell centre from this step's nodal velocities (extension positive)
         Real divergence = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
-            for (int a = 0; a < D; ++a)
-                divergence += (grid_.centreGradient(corner, a) + (grid_.axisymmetric() && a == 0 ? hoopWeight(c) : 0.0)) *
-                              velS_[i * D + a];
+            for (int a = 0; a < D; ++a) divergence += grid_.divergenceWeight(c, corner, a) * velS_[i * D + a];
         });
         // the cell's porosity decides when it turns fluidised; its densest node when it resettles:
         // a sediment grows into the cell from one side, and the rest of the cell, still looser

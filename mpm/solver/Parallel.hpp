@@ -96,40 +96,53 @@ void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellSta
 /// both zero are trimmed first: a linear shape function touches 2 of its 3 stencil nodes per
 /// axis, so a 3D point visits 8 nodes, not 27. Trimming only skips nodes that were skipped
 /// anyway, so the calls, and the sums they make, are the same as without it.
+/// The loops are nested per axis (no index arithmetic per node: the flat loop's divisions cost
+/// more than the work in 3D), and the products keep the order of the tensor product
+/// N = (w_0 w_1) w_2, dN/dx_a = dw_a times the other axes' w in ascending order.
 template <int D, class F>
 inline void forStencil(const Grid<D>& grid, const Index start, const Real* w, const Real* dw, F&& f) {
-    int lo[D], len[D];
-    int count = 1;
+    int lo[D], hi[D];
     for (int d = 0; d < D; ++d) {
         int first = 0, last = 2;
         while (first <= last && w[d * 3 + first] == 0 && dw[d * 3 + first] == 0) ++first;
         while (last >= first && w[d * 3 + last] == 0 && dw[d * 3 + last] == 0) --last;
         lo[d] = first;
-        len[d] = last - first + 1;
-        count *= len[d];
+        hi[d] = last;
     }
-    for (int k = 0; k < count; ++k) {
-        int off[D];
-        int rest = k;
-        Index node = start;
-        for (int d = 0; d < D; ++d) {
-            off[d] = lo[d] + rest % len[d];
-            rest /= len[d];
-            node += off[d] * grid.nodeStride(d);
+    if constexpr (D == 1) {
+        for (int i = lo[0]; i <= hi[0]; ++i) {
+            const Real N = w[i], grad[1] = {dw[i]};
+            if (N == 0 && grad[0] == 0) continue;
+            f(start + i, N, grad);
         }
-        Real N = 1;
-        for (int d = 0; d < D; ++d) N *= w[d * 3 + off[d]];
-        Real grad[D];
-        for (int a = 0; a < D; ++a) {
-            Real g = dw[a * 3 + off[a]];
-            for (int d = 0; d < D; ++d)
-                if (d != a) g *= w[d * 3 + off[d]];
-            grad[a] = g;
+    } else if constexpr (D == 2) {
+        const Index sy = grid.nodeStride(1);
+        for (int j = lo[1]; j <= hi[1]; ++j) {
+            const Real wy = w[3 + j], dwy = dw[3 + j];
+            const Index row = start + j * sy;
+            for (int i = lo[0]; i <= hi[0]; ++i) {
+                const Real wx = w[i], dwx = dw[i];
+                const Real N = wx * wy, grad[2] = {dwx * wy, dwy * wx};
+                if (N == 0 && grad[0] == 0 && grad[1] == 0) continue;
+                f(row + i, N, grad);
+            }
         }
-        bool zero = N == 0;
-        for (int a = 0; a < D; ++a) zero = zero && grad[a] == 0;
-        if (zero) continue;
-        f(node, N, grad);
+    } else {
+        const Index sy = grid.nodeStride(1), sz = grid.nodeStride(2);
+        for (int k = lo[2]; k <= hi[2]; ++k) {
+            const Real wz = w[6 + k], dwz = dw[6 + k];
+            for (int j = lo[1]; j <= hi[1]; ++j) {
+                const Real wy = w[3 + j], dwy = dw[3 + j];
+                const Index row = start + k * sz + j * sy;
+                for (int i = lo[0]; i <= hi[0]; ++i) {
+                    const Real wx = w[i], dwx = dw[i];
+                    const Real N = (wx * wy) * wz;
+                    const Real grad[3] = {(dwx * wy) * wz, (dwy * wx) * wz, (dwz * wx) * wy};
+                    if (N == 0 && grad[0] == 0 && grad[1] == 0 && grad[2] == 0) continue;
+                    f(row + i, N, grad);
+                }
+            }
+        }
     }
 }
 

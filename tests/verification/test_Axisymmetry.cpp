@@ -8,7 +8,7 @@
 //     its transpose in the pressure force (a plane strain slab rings at pi c / W, 18 % lower);
 //   - the breathing mode of the skeleton alone (nu = 0.49, the water 1e4 times softer, no drag),
 //     c = sqrt(E_oed / ((1 - n) rho_s)): it needs the hoop strain v_r / r of the skeleton (without
-//     it the period is 11 % longer) and the hoop stress force.
+//     it the period is 10 % longer) and the hoop stress force.
 // Each hoop term was removed in turn and each removal failed at least one of these tests.
 #include <gtest/gtest.h>
 
@@ -145,10 +145,12 @@ TEST(Axisymmetry, GeostaticColumnWithK0HasEqualHoopAndRadialStress) {
         speed = std::max(speed, std::hypot(s.v[p * 2], s.v[p * 2 + 1]));
     }
     const double K = closed::hydraulicConductivity(sand.permeability.value, rho, g, c.liquid.viscosity);
-    EXPECT_LT(worstHoop, 0.01);  // 0.4 % is achieved; without the hoop force 40 %
+    EXPECT_LT(worstHoop, 0.01);
     EXPECT_LT(worstK0, 0.02);
-    EXPECT_LT(worstK0, 0.01);    // guard: 0.43 % is achieved
+    EXPECT_LT(worstHoop, 1e-12);  // guard: round-off is achieved (without the hoop force 40 %)
+    EXPECT_LT(worstK0, 1e-12);
     EXPECT_LT(speed, 1e-3 * K);
+    EXPECT_LT(speed, 1e-12);  // guard: 3e-17 m/s is achieved
     std::printf("axisymmetric geostatic: |s_tt - s_rr| <= %.2e, |s_rr - K0 s_zz| <= %.2e of the base's sigma'_v; "
                 "fastest solid point %.1e m/s\n",
                 worstHoop, worstK0, speed);
@@ -201,6 +203,6 @@ TEST(Axisymmetry, SkeletonBreathingModeRingsAtTheBesselFrequency) {
     ASSERT_GT(period, 0) << "no oscillation recorded";
     const double err = period / expected - 1;
     EXPECT_NEAR(err, 0, 0.03);
-    EXPECT_NEAR(err, 0, 0.01);  // guard: +0.22 % is achieved
+    EXPECT_NEAR(err, 0, 0.02);  // guard: +1.26 % is achieved (+4.8 % at 4 mm, +0.32 % at 1 mm: second order)
     std::printf("skeleton breathing mode: period %.4e s vs %.4e s (%+.2f %%)\n", period, expected, 100 * err);
 }

@@ -27,10 +27,8 @@ double timeToHeadFraction(const CaseRun& run, double tail, double fraction) {
     return -1;
 }
 
-}  // namespace
-
-TEST(FallingHead, DarcyWithTubeDecaysExponentially) {
-    const CaseRun run = runVerificationCase("falling_head");
+void checkDarcyWithTube(const std::function<void(CaseConfig&)>& geometry = {}) {
+    const CaseRun run = runVerificationCase("falling_head", geometry);
     const auto& c = run.config;
     const auto& sand = c.material("sand");
     const double g = c.gravity, rho = c.liquid.density, mu = c.liquid.viscosity;
@@ -52,15 +50,17 @@ TEST(FallingHead, DarcyWithTubeDecaysExponentially) {
     }
     const double tHalf = timeToHeadFraction(run, tail, 0.5);
     EXPECT_NEAR(tHalf, tau * std::log(2.0), 0.02 * tau * std::log(2.0));
-    // guards: 0.11 % and 0.02 % are achieved (0.90 % and 0.09 % before the overflow held the surface)
-    EXPECT_LT(worst, 3e-3);
-    EXPECT_NEAR(tHalf, tau * std::log(2.0), 1e-3 * tau * std::log(2.0));
+    if (onShippedGrid(c)) {
+        // guards: 0.11 % and 0.02 % are achieved (0.90 % and 0.09 % before the overflow held the surface)
+        EXPECT_LT(worst, 3e-3);
+        EXPECT_NEAR(tHalf, tau * std::log(2.0), 1e-3 * tau * std::log(2.0));
+    }
     std::printf("falling head (Darcy + tube): tau = %.4f s, t(h0/2) = %.4f s vs %.4f s, worst head error %.2f %%\n",
                 tau, tHalf, tau * std::log(2.0), 100 * worst);
 }
 
-TEST(FallingHead, ForchheimerFormMatchesClosedForm) {
-    const CaseRun run = runVerificationCase("falling_head_forchheimer");
+void checkForchheimer(const std::function<void(CaseConfig&)>& geometry = {}) {
+    const CaseRun run = runVerificationCase("falling_head_forchheimer", geometry);
     const auto& c = run.config;
     const auto& m = c.material("gravel");
     const auto law = PermeabilityLaw::from(m);
@@ -79,8 +79,36 @@ TEST(FallingHead, ForchheimerFormMatchesClosedForm) {
         const double exact = fh.timeToHead(h0, fraction * h0);
         ASSERT_GT(t, 0) << "the head never fell to " << fraction << " h0";
         EXPECT_NEAR(t, exact, 0.02 * exact) << "h/h0 = " << fraction;
-        EXPECT_NEAR(t, exact, 6e-3 * exact) << "guard: +0.30 % and -0.03 % are achieved";
+        if (onShippedGrid(c)) {
+            EXPECT_NEAR(t, exact, 6e-3 * exact) << "guard: +0.30 % and -0.03 % are achieved";
+        }
         std::printf("falling head (Forchheimer): h/h0 = %.2f at %.4f s vs %.4f s (%+.2f %%)\n", fraction, t,
                     exact, 100 * (t / exact - 1));
     }
 }
+
+}  // namespace
+
+TEST(FallingHead, DarcyWithTubeDecaysExponentially) { checkDarcyWithTube(); }
+
+TEST(FallingHead, ForchheimerFormMatchesClosedForm) { checkForchheimer(); }
+
+// the same columns in 2D, axisymmetry and 3D (VerificationCase.hpp), with the 1D tolerances
+class FallingHeadIn : public ::testing::TestWithParam<Geometry> {};
+
+TEST_P(FallingHeadIn, DarcyWithTubeAndForchheimerMatchTheirClosedForms) {
+    // the reservoir scaled with the column's cross-section (an axisymmetric column of two cells'
+    // radius is a fifth of the 1D area): A_r / A_s and the tube's share A_s R_t stay, and so does
+    // the closed form's time scale
+    const auto geometry = [](CaseConfig& c) {
+        const double before = c.grid.crossSectionArea;
+        inTestGeometry(c, GetParam());
+        const double ratio = c.grid.crossSectionArea / before;
+        c.reservoir.area *= ratio;
+        c.reservoir.tubeLength /= ratio;
+    };
+    checkDarcyWithTube(geometry);
+    checkForchheimer(geometry);
+}
+
+INSTANTIATE_TEST_SUITE_P(Geometries, FallingHeadIn, kGeometries, geometryName);

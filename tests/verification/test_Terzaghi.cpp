@@ -71,11 +71,10 @@ TEST(Terzaghi, ExcessPorePressureFollowsVerruijtSolutionWithGimpOnePointPerCell)
 // no lateral mode); lateral errors proper are the business of test_LateralPhysics.cpp.
 namespace {
 template <int D>
-void checkTerzaghiInDimension(int across, double tolerance, double guard) {
+void checkTerzaghiInDimension(int across, double tolerance, double guard, bool axisymmetric = false,
+                              double spreadBound = 1e-12, double level = 1e-7) {
     CaseConfig c = loadVerificationCase("terzaghi");
-    c.grid.dimension = D;
-    c.grid.width = across * c.grid.cellSize;
-    if (D == 3) c.grid.crossSectionArea = c.grid.width * c.grid.width;
+    inGeometry(c, D == 3 ? Geometry::ThreeD : (axisymmetric ? Geometry::Axisymmetric : Geometry::Plane2D), across);
     const auto& sand = c.material("sand");
     const double Eoed = closed::oedometricModulus(sand.youngsModulus, sand.poissonRatio);
     const double KL = c.liquid.bulkModulus, n = sand.porosity;
@@ -97,28 +96,36 @@ void checkTerzaghiInDimension(int across, double tolerance, double guard) {
         // within a row the pressure varies with height (each point carries the cell's gradient)
         const auto& l = solver.liquid();
         struct Level { double lo = 1e300, hi = -1e300; int points = 0; };
-        std::map<long, Level> level;  // by height in 0.1 um
+        std::map<long, Level> levels;  // by height, in steps of `level`
         for (std::size_t p = 0; p < l.size(); ++p) {
             const double z = l.x[p * D + D - 1];
             if (z <= c.filterLevel() || z >= c.sandTop()) continue;
-            Level& at = level[std::lround(z * 1e7)];
+            Level& at = levels[std::lround(z / level)];
             at.lo = std::min(at.lo, l.pressure[p]);
             at.hi = std::max(at.hi, l.pressure[p]);
             ++at.points;
         }
-        ASSERT_GT(level.size(), 20u);
-        for (const auto& [key, at] : level) {
+        ASSERT_GT(levels.size(), 20u);
+        for (const auto& [key, at] : levels) {
             EXPECT_GE(at.points, 2 * across) << "points at one height side by side";
             spread = std::max(spread, (at.hi - at.lo) / u0);
         }
     }
     EXPECT_LE(worst, guard) << D << "D: achieved 0.0046 (the 1D run's 0.0061 over its whole run)";
-    EXPECT_LE(spread, 1e-12) << D << "D: a laterally uniform column must stay so (round-off: 3.5e-16)";
-    std::printf("Terzaghi %dD: largest |u/u0 - exact| %.4f, largest lateral spread %.2e u0\n", D, worst, spread);
+    EXPECT_LE(spread, spreadBound) << D << "D: a laterally uniform column must stay so";
+    std::printf("Terzaghi %dD%s: largest |u/u0 - exact| %.4f, largest lateral spread %.2e u0\n", D,
+                axisymmetric ? " axisymmetric" : "", worst, spread);
 }
 }  // namespace
 
 TEST(Terzaghi, In2DAnd3DTheRowsFollowVerruijtAndStayLaterallyUniform) {
+    // plane and 3D: points side by side agree to round-off (3.5e-16 u0 is achieved)
     checkTerzaghiInDimension<2>(4, 0.05, 0.01);
     checkTerzaghiInDimension<3>(2, 0.05, 0.01);
+}
+
+TEST(Terzaghi, AxisymmetricRowsFollowVerruijtAndStayLaterallyUniform) {
+    // the rings' stresses are integrated at the points, so a uniform state balances only to the
+    // points' quadrature: the lateral spread is small, not round-off
+    checkTerzaghiInDimension<2>(4, 0.05, 0.01, true, 1e-2, 1e-5);
 }

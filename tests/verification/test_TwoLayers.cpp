@@ -11,8 +11,10 @@
 using namespace qs;
 using namespace qs::test;
 
-TEST(TwoLayers, FluxAndHeadProfileMatchLayersInSeries) {
-    const CaseRun run = runVerificationCase("two_layers");
+namespace {
+
+void checkTwoLayers(const std::function<void(CaseConfig&)>& geometry = {}) {
+    const CaseRun run = runVerificationCase("two_layers", geometry);
     const auto& c = run.config;
     const double g = c.gravity, rho = c.liquid.density, mu = c.liquid.viscosity;
     const auto& filter = c.material("filter");
@@ -30,9 +32,11 @@ TEST(TwoLayers, FluxAndHeadProfileMatchLayersInSeries) {
     const double qFilter = meanAfter(run.series, t0, [](const ColumnState& s) { return s.monitorFlux.at(1); });
     EXPECT_NEAR(qSand, q, 0.01 * q);
     EXPECT_NEAR(qFilter, q, 0.01 * q);
-    // guards: -0.03 % is achieved (-0.19 % before the overflow held the surface)
-    EXPECT_NEAR(qSand, q, 1e-3 * q);
-    EXPECT_NEAR(qFilter, q, 1e-3 * q);
+    if (onShippedGrid(c)) {
+        // guards: -0.03 % is achieved (-0.19 % before the overflow held the surface)
+        EXPECT_NEAR(qSand, q, 1e-3 * q);
+        EXPECT_NEAR(qFilter, q, 1e-3 * q);
+    }
 
     // excess head h(z) = (p - rho g (tail - z)) / (rho g), piecewise linear: dh at the base of
     // the filter layer, q L1/K1 at the interface, 0 at the sand top
@@ -46,3 +50,16 @@ TEST(TwoLayers, FluxAndHeadProfileMatchLayersInSeries) {
     std::printf("two layers: q sand %.5g, filter %.5g, closed form %.5g m/s (%+.3f %%)\n", qSand, qFilter, q,
                 100 * (qSand / q - 1));
 }
+
+}  // namespace
+
+TEST(TwoLayers, FluxAndHeadProfileMatchLayersInSeries) { checkTwoLayers(); }
+
+// the same column in 2D, axisymmetry and 3D (VerificationCase.hpp), with its 1D tolerances
+class TwoLayersIn : public ::testing::TestWithParam<Geometry> {};
+
+TEST_P(TwoLayersIn, FluxAndHeadProfileMatchLayersInSeries) {
+    checkTwoLayers([](CaseConfig& c) { inTestGeometry(c, GetParam()); });
+}
+
+INSTANTIATE_TEST_SUITE_P(Geometries, TwoLayersIn, kGeometries, geometryName);
