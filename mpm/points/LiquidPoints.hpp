@@ -25,7 +25,6 @@ struct LiquidPoints {
 
     ShapeCache<D> shape;          ///< per-step scratch
     std::vector<Real> weight;     ///< m3, integration weight V* (per step, see the solver)
-    std::vector<Real> strainVol;  ///< -, volumetric strain increment of the last step
     Real halfLength = 0;          ///< m, uGIMP particle half-length
 
     std::size_t size() const { return mass.size(); }

@@ -133,7 +133,6 @@ void DoublePointSolver<D>::allocate() {
     scratch_.order.reserve(liquidCapacity);
     liquid_.shape.reserve(liquidCapacity);
     liquid_.weight.reserve(liquidCapacity);
-    liquid_.strainVol.reserve(liquidCapacity);
     solid_.shape.reserve(solid_.size());
     solid_.stressReturn.assign(solid_.size(), 0);
     dropFlags_.reserve(liquidCapacity);

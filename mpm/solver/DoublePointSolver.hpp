@@ -170,6 +170,7 @@ private:
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_, velSOld_,
         velLOld_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
     std::vector<char> diffusionNode_;  ///< nodes where the front diffusion acts
+    bool anyDiffusion_ = false;        ///< whether any node is one
     std::vector<Real> pressureGradient_;  ///< Pa/m, [node][axis]
     BoundaryMasks<D> masks_;
     InflowChamber<D> chamber_;

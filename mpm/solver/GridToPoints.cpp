@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdlib>
+#include <type_traits>
 
 #include "solver/DoublePointSolver.hpp"
 #include "materials/ConstitutiveModel.hpp"
@@ -95,10 +96,12 @@ void DoublePointSolver<D>::gridToPoints() {
             for (int k = 0; k < 6; ++k) s[k] = 0;
     });
 
-    liquid_.strainVol.resize(liquid_.size());
-    forAll(static_cast<Index>(liquid_.size()), [&](Index p) {
+    // The liquid's update, with the front diffusion's sums only on steps that have any (most
+    // steps of most runs have no stress-free sand)
+    auto liquidPoint = [&](Index p, auto withDiffusion) {
+        constexpr bool diffusion = decltype(withDiffusion)::value;
         Real dv[D] = {}, vNew[D] = {}, div = 0, gradPhi[D] = {}, sand = 0, mixture = 0, gradP[D] = {};
-        bool diffuses = true;
+        bool diffuses = diffusion;
         forStencil<D>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
                       &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
@@ -106,12 +109,14 @@ void DoublePointSolver<D>::gridToPoints() {
                 dv[d] += N * (v - velLOld_[i * D + d]);
                 vNew[d] += N * v;
                 div += v * gradN[d];
-                gradPhi[d] -= gradN[d] * sandPorosity_[i];
+                if constexpr (diffusion) gradPhi[d] -= gradN[d] * sandPorosity_[i];
                 gradP[d] += N * pressureGradient_[i * D + d];
             }
-            sand += N * sandPorosity_[i];
-            mixture += N * porosity_[i];
-            if (N > 0 && !diffusionNode_[i]) diffuses = false;
+            if constexpr (diffusion) {
+                sand += N * sandPorosity_[i];
+                mixture += N * porosity_[i];
+                if (N > 0 && !diffusionNode_[i]) diffuses = false;
+            }
         });
         const Real k = diffuses ? cellDiffusivity_[liquid_.shape.cell[p]] / std::max(Real(1e-3), 1 - sand) : 0;
         if (axisymmetric) div += vNew[0] / liquid_.x[p * D];  // the hoop strain rate v_r / r
@@ -127,9 +132,11 @@ void DoublePointSolver<D>::gridToPoints() {
             // cell's mean by a cell's drop
             liquid_.pressure[p] += gradP[d] * moved;
         }
-        liquid_.strainVol[p] = dt * div;
         liquid_.volume[p] *= 1 + dt * div;  // V follows the liquid's own strain
-    });
+    };
+    const Index liquidCount = static_cast<Index>(liquid_.size());
+    if (anyDiffusion_) forAll(liquidCount, [&](Index p) { liquidPoint(p, std::true_type{}); });
+    else forAll(liquidCount, [&](Index p) { liquidPoint(p, std::false_type{}); });
 }
 
 // ---------------------------------------------------------------------------------------------
