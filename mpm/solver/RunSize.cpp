@@ -49,7 +49,7 @@ double cellBytes(int D) { return 8.0 * 3 + 2 + 8.0 * (6 + D); }
 std::int64_t liquidCapacity(const CaseConfig& config, std::int64_t cells, std::int64_t initialLiquid) {
     const int D = config.grid.dimension;
     const double perLayer = std::pow(double(config.points.liquidPerCell), D - 1);
-    return saturatedCount(4.0 * double(cells) * freeWaterPointsPerCell(config) * perLayer + double(initialLiquid));
+    return saturatedCount(std::max(1.25 * double(cells) * freeWaterPointsPerCell(config) * perLayer, double(initialLiquid)));
 }
 
 double fastestWaveSpeed(const CaseConfig& config) {
