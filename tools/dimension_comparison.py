@@ -77,9 +77,13 @@ def run(case_dir, geometry, across, end, quicksand, work):
         f.write(text)
     t0 = time.time()
     print(f"{geometry}: running {out} ...", flush=True)
-    subprocess.run([quicksand, "run", out], check=True, stdout=subprocess.DEVNULL)
+    done = subprocess.run([quicksand, "run", out], stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     wall = time.time() - t0
     s = read_series(os.path.join(out, "output", "series.csv"))
+    s["failed"] = None
+    if done.returncode != 0:  # keep what it wrote: where it stopped is part of the comparison
+        s["failed"] = done.stderr.strip().splitlines()[-1] if done.stderr.strip() else f"exit {done.returncode}"
+        print(f"{geometry}: stopped at t = {s['time'][-1]:.2f} s: {s['failed']}", flush=True)
     s["filter_velocity"] = [q / area for q in s["gate_flux"]]
     return s, wall, area
 
@@ -119,10 +123,12 @@ def main():
         dh = largest_difference(s, ref, "bed_height") / H
         df = largest_difference(s, ref, "fluidised_front") / H
         rows.append({"geometry": g, "wall_s": round(wall, 1), "cost_vs_1d": round(wall / wall1d, 2),
-                     "cross_section_m2": area, "filter_velocity_diff": dq, "bed_height_diff": dh, "front_diff": df})
-        print(f"{g:14s} {wall:9.1f} {wall / wall1d:6.1f} {100 * dq:15.2f}% {100 * dh:10.2f}% {100 * df:8.2f}%")
-    print("(largest differences from the 1D run over the run: filter velocity relative to its largest value, "
-          "bed height and front relative to the bed's initial height)")
+                     "cross_section_m2": area, "filter_velocity_diff": dq, "bed_height_diff": dh, "front_diff": df,
+                     "end_s": s["time"][-1], "stopped": s["failed"] or ""})
+        print(f"{g:14s} {wall:9.1f} {wall / wall1d:6.1f} {dq:16.2e} {dh:11.2e} {df:9.2e}"
+              + (f"   (stopped at t = {s['time'][-1]:.2f} s)" if s["failed"] else ""))
+    print("(largest differences from the 1D run over the run, as fractions: the filter velocity of its largest "
+          "value, the bed height and the front of the bed's initial height)")
     with open(os.path.join(work, "comparison.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
@@ -135,7 +141,7 @@ def main():
     style = {"1d": dict(color="k", lw=2.5), "axisymmetric": dict(color="tab:orange", lw=1.5, ls="--"),
              "3d": dict(color="tab:blue", lw=1.2, ls=":")}
     for g, (s, wall, area) in runs.items():
-        label = f"{g} ({wall:.0f} s)"
+        label = f"{g} ({wall:.0f} s)" + (f", stopped at {s['time'][-1]:.1f} s" if s["failed"] else "")
         ax[0].plot(s["time"], [1000 * q for q in s["filter_velocity"]], label=label, **style.get(g, {}))
         ax[1].plot(s["time"], [1000 * b for b in s["bed_height"]], label=label, **style.get(g, {}))
         ax[2].plot(s["time"], [1000 * (f - ref["fluidised_front"][0]) for f in s["fluidised_front"]], label=label,
