@@ -58,7 +58,7 @@ template <int D>
 Real InflowChamber<D>::gapAtNode(const Grid<D>& grid, Index node) const {
     if (D == 1) return gaps_[0];
     // the slots whose centres lie in the node's footprint (half a cell either side, inside the
-    // grid): the gap the node's water sees, in equal shares
+    // grid): the gap the node's water sees
     const IVec<D> n = grid.nodeCoords(node);
     const int lpc = pointsPerCell_;
     Index lo[D], hi[D], count[D];
@@ -70,7 +70,8 @@ Real InflowChamber<D>::gapAtNode(const Grid<D>& grid, Index node) const {
     }
     Index total = 1;
     for (int d = 0; d < D - 1; ++d) total *= count[d];
-    Real sum = 0;
+    // weighted by the slots' footprints (equal shares but in axisymmetry, where they grow with r)
+    Real sum = 0, weight = 0;
     for (Index k = 0; k < total; ++k) {
         Index rest = k, slot = 0, stride = 1;
         for (int d = 0; d < D - 1; ++d) {
@@ -78,9 +79,11 @@ Real InflowChamber<D>::gapAtNode(const Grid<D>& grid, Index node) const {
             rest /= count[d];
             stride *= grid.cells(d) * lpc;
         }
-        sum += gaps_[slot];
+        const Real w = grid.axisymmetric() ? slotFootprint(grid, slot) : 1.0;
+        sum += w * gaps_[slot];
+        weight += w;
     }
-    return sum / total;
+    return sum / weight;
 }
 
 template <int D>

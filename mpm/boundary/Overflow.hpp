@@ -1,9 +1,11 @@
 #pragma once
 // The overflow level at the top of the column (physics.md section 2, outflow): liquid points
-// above it leave the domain and count as outflow (the real test weighs it). Removing whole points
-// makes the water level jump by one point's height; the missing water is put back as a surface
-// pressure rho_L g (z_overflow - z_surface), with z_surface from the liquid mass above a
-// reference plane (the point volumes drift, the mass does not).
+// above it leave the domain and count as outflow (the real test weighs it). The overflow holds
+// the water's surface at its level: the water's top cells count as full (solver/PointsToGrid.cpp),
+// so removing whole points no longer makes the level jump. (physics.md's surface pressure
+// rho_L g (z_overflow - z_surface), with z_surface from the liquid mass, did that until
+// 2026-12-02; in 2D its point-sampled surface pumped energy into the free water.) The water
+// surface from the liquid mass is still measured for series.csv.
 #include <algorithm>
 #include <cmath>
 #include <sstream>

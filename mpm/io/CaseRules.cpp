@@ -132,6 +132,34 @@ void checkStartingState(const CaseConfig& c, const KeyLocations& where) {
     }
 }
 
+/// The overflow holds the water's surface at its level (solver/PointsToGrid.cpp): a reservoir
+/// whose head starts below it would drain the column below the overflow, where that no longer
+/// holds. (During a run the solver stops, saying so, if the water falls half a cell below it.)
+void checkHeadAgainstOverflow(const CaseConfig& c, const KeyLocations& where) {
+    if (!c.column.overflowLevel || c.gate.mode != GateMode::Pressure) return;
+    if (!atLeast(c.reservoir.head, *c.column.overflowLevel))
+        where.table("reservoir").fail("head", "head = " + number(c.reservoir.head) + " m is below the overflow level " +
+                                                   "column.overflow_level = " + number(*c.column.overflowLevel) +
+                                                   " m: the column would drain below the overflow, which holds the "
+                                                   "water's surface at its level; expected head >= overflow_level");
+}
+
+/// Axisymmetric grids integrate over the rings with the rule the points do, m points across a
+/// cell (grid/Grid.hpp): one rule for both phases, and for linear shape functions (uGIMP spreads
+/// each point over its own domain, another rule)
+void checkAxisymmetricRules(const CaseConfig& c, const KeyLocations& where) {
+    if (c.grid.geometry != GridGeometry::Axisymmetric) return;
+    const Table s = where.table("grid");
+    if (c.grid.shapeFunctions != ShapeFunctionKind::Linear)
+        s.fail("geometry", "geometry = \"axisymmetric\" needs shape_functions = \"linear\": its rings are integrated "
+                           "the way linear points integrate them (grid/Grid.hpp), which uGIMP does not");
+    if (c.points.solidPerCell != c.points.liquidPerCell)
+        s.fail("geometry", "geometry = \"axisymmetric\" needs as many liquid as solid points per cell and axis "
+                           "(points.solid_per_cell = " + std::to_string(c.points.solidPerCell) +
+                               ", points.liquid_per_cell = " + std::to_string(c.points.liquidPerCell) +
+                               "): the grid integrates over the rings with the points' rule, one for both phases");
+}
+
 }  // namespace
 
 void validateGeometry(const CaseConfig& config, const KeyLocations& where) {
@@ -143,6 +171,8 @@ void validateGeometry(const CaseConfig& config, const KeyLocations& where) {
 void validateInitialState(const CaseConfig& config, const KeyLocations& where) {
     checkPorosityBounds(config, where);
     checkStartingState(config, where);
+    checkHeadAgainstOverflow(config, where);
+    checkAxisymmetricRules(config, where);
 }
 
 }  // namespace qs

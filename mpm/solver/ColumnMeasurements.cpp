@@ -21,8 +21,10 @@ Real DoublePointSolver<D>::footprintShare(Index node, const std::optional<Horizo
         if (!range) continue;
         const Real centre = n[d] * h, extent = grid_.cells(d) * h;
         const Real lo = std::max(Real(0), centre - h / 2), hi = std::min(extent, centre + h / 2);
-        const Real inside = std::min(hi, Real(range->to)) - std::max(lo, Real(range->from));
-        share *= std::max(Real(0), inside) / (hi - lo);
+        const Real a = std::max(lo, Real(range->from)), b = std::min(hi, Real(range->to));
+        if (b <= a) return 0.0;
+        // in axisymmetry by ring area (the integral of r dr), elsewhere by length
+        share *= grid_.axisymmetric() ? (b * b - a * a) / (hi * hi - lo * lo) : (b - a) / (hi - lo);
     }
     return share;
 }
@@ -130,24 +132,30 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         }
         row.porePressure = w > 0 ? pw / w : 0.0;
     }
+    // row means over the solid points, each weighted by the ring it stands for in axisymmetry (its
+    // radius), equally elsewhere
+    std::vector<Real> weight(rows, 0.0);
+    const bool axisymmetric = grid_.axisymmetric();
     for (std::size_t p = 0; p < solid_.size(); ++p) {
         const Index r = std::clamp<Index>(static_cast<Index>(solid_.x[p * D + D - 1] / grid_.h()), 0, rows - 1);
-        out[r].verticalStress += solid_.stress[p * 6 + 2];
-        out[r].horizontalStress += solid_.stress[p * 6 + 0];
+        const Real w = axisymmetric ? solid_.x[p * D] : 1.0;
+        out[r].verticalStress += w * solid_.stress[p * 6 + 2];
+        out[r].horizontalStress += w * solid_.stress[p * 6 + 0];
         const Real n = solid_.porosity[p];
         out[r].minPorosity = out[r].solidCount ? std::min(out[r].minPorosity, n) : n;
         out[r].maxPorosity = out[r].solidCount ? std::max(out[r].maxPorosity, n) : n;
-        out[r].porosity += n;
-        if (solid_.state[p] == kFluidisedState) out[r].fluidisedShare += 1;
+        out[r].porosity += w * n;
+        if (solid_.state[p] == kFluidisedState) out[r].fluidisedShare += w;
         ++out[r].solidCount;
+        weight[r] += w;
     }
     for (Index r = 0; r < rows; ++r) {
         auto& row = out[r];
         if (row.solidCount > 0) {
-            row.verticalStress /= row.solidCount;
-            row.horizontalStress /= row.solidCount;
-            row.porosity /= row.solidCount;
-            row.fluidisedShare /= row.solidCount;
+            row.verticalStress /= weight[r];
+            row.horizontalStress /= weight[r];
+            row.porosity /= weight[r];
+            row.fluidisedShare /= weight[r];
         }
         Real q = 0, a = 0;
         for (Index i = r * grid_.nodeStride(D - 1); i < (r + 1) * grid_.nodeStride(D - 1); ++i) {

@@ -20,12 +20,15 @@ namespace qs {
 template <int D>
 void DoublePointSolver<D>::gridToPoints() {
     const Real dt = dt_;
-    Real extent[D];  // points stay inside the grid, axis by axis
+    Real lowest[D] = {}, extent[D];  // points stay inside the grid, axis by axis
     for (int d = 0; d < D; ++d) extent[d] = grid_.cells(d) * grid_.h();
     const bool axisymmetric = grid_.axisymmetric();
+    // in axisymmetry off the axis itself, where the hoop terms divide by r (a point reaches the
+    // axis only when something pushes it there: v_r vanishes on the axis)
+    if (axisymmetric) lowest[0] = 1e-6 * grid_.h();
     forAll(static_cast<Index>(solid_.size()), [&](Index p) {
         Real dv[D] = {}, vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
-        bool diffuses = true;
+        bool diffuses = true, held[D] = {};
         forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
                       &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
@@ -37,14 +40,17 @@ void DoublePointSolver<D>::gridToPoints() {
             }
             gridPorosity += N * sandPorosity_[i];
             if (N > 0 && !diffusionNode_[i]) diffuses = false;
+            for (int d = 0; d < D - 1; ++d) held[d] = held[d] || (N > 0 && masks_.solidFixed[i * D + d]);
         });
         const Index cell = solid_.shape.cell[p];
         const Real radius = solid_.x[p * D];  // where the shape functions were taken
         for (int d = 0; d < D; ++d) {
             solid_.v[p * D + d] += dv[d];  // FLIP: PIC would smear the jumps at porosity interfaces
-            // the front diffusion moves the point; it is not part of its (FLIP) velocity
-            const Real w = diffuses ? -cellDiffusivity_[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
-            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), Real(0), extent[d]);
+            // the front diffusion moves the point; it is not part of its (FLIP) velocity. Next to a
+            // wall it does not move it towards or away from the wall: no flux through the wall,
+            // whatever the field beside it (the gradient there is one-sided)
+            const Real w = diffuses && !held[d] ? -cellDiffusivity_[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
+            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), lowest[d], extent[d]);
         }
         Real dEps[6] = {};
         for (int d = 0; d < D; ++d)
@@ -101,7 +107,7 @@ void DoublePointSolver<D>::gridToPoints() {
     auto liquidPoint = [&](Index p, auto withDiffusion) {
         constexpr bool diffusion = decltype(withDiffusion)::value;
         Real dv[D] = {}, vNew[D] = {}, div = 0, gradPhi[D] = {}, sand = 0, mixture = 0, gradP[D] = {};
-        bool diffuses = diffusion;
+        bool diffuses = diffusion, held[D] = {};
         forStencil<D>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
                       &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
@@ -116,6 +122,7 @@ void DoublePointSolver<D>::gridToPoints() {
                 sand += N * sandPorosity_[i];
                 mixture += N * porosity_[i];
                 if (N > 0 && !diffusionNode_[i]) diffuses = false;
+                for (int d = 0; d < D - 1; ++d) held[d] = held[d] || (N > 0 && masks_.liquidFixed[i * D + d]);
             }
         });
         const Real k = diffuses ? cellDiffusivity_[liquid_.shape.cell[p]] / std::max(Real(1e-3), 1 - sand) : 0;
@@ -123,9 +130,9 @@ void DoublePointSolver<D>::gridToPoints() {
         for (int d = 0; d < D; ++d) {
             liquid_.v[p * D + d] += dv[d];
             // the liquid's share of the front diffusion: the mixture's volume flux stays
-            const Real w = diffuses ? (1 - mixture) / mixture * k * gradPhi[d] : 0;
+            const Real w = diffuses && !held[d] ? (1 - mixture) / mixture * k * gradPhi[d] : 0;
             const Real moved = dt * (vNew[d] + w);
-            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + moved, Real(0), extent[d]);
+            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + moved, lowest[d], extent[d]);
             // pore pressure is a field the liquid moves through: a point carries its pressure
             // along the gradient (and takes the cell's change at a fixed place, updatePressure),
             // so that it enters the next cell with that cell's pressure instead of kicking the

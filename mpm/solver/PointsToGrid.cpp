@@ -98,6 +98,23 @@ void DoublePointSolver<D>::classifyCells() {
             liquid_.state[p] = (!above && thin) ? kFreeSurfaceLiquid : kSubmergedLiquid;
         }
     });
+    // The overflow's top cells count as full only while the water stands there: fallen half a
+    // cell below it (the reservoir drained the column, the water spilled elsewhere), the grid would
+    // hold water the column has lost, and the run stops saying so (the head is checked against the
+    // overflow before the run, io/CaseRules.cpp)
+    if (overflowRow_ > 0) {
+        Real water = 0, room = 0;
+        const Index columns = grid_.numCells() / rows, first = (overflowRow_ - 1) * up;
+        for (Index c = first; c < first + columns; ++c) {
+            water += std::min(cellLiquidVolume_[c], grid_.cellVolume(c));
+            room += grid_.cellVolume(c);
+        }
+        QS_CHECK(water >= 0.5 * room,
+                 "the water fell below the overflow level column.overflow_level = "
+                     << *config_.column.overflowLevel << " m at t = " << time_ << " s: its top row of cells is "
+                     << 100 * water / room << " % full. The overflow holds the water's surface at its level, "
+                        "so the reservoir's head must keep the column full to it");
+    }
 }
 
 // ---------------------------------------------------------------------------------------------

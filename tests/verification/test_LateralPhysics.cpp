@@ -125,6 +125,41 @@ TEST(SideBySide, TwoGravelsInSeepageEachCarryTheirOwnFluxFor15Seconds) {
                 fewest, most);
 }
 
+TEST(SideBySide, ACoreAndAnAnnulusOfTwoGravelsInSeepageCarryTheirOwnFluxes) {
+    // the two gravels as a cylinder: the fine one a core of 18 mm radius, the coarse one the
+    // annulus around it to 36 mm (the zone's x range is the radius). Each carries its own
+    // Darcy-Forchheimer flux as in plane strain; the water crossing between them under the filter
+    // and above the sand does so through the hoop terms of the divergence and its transpose
+    const CaseRun run = runVerificationCase("side_by_side", [](CaseConfig& c) {
+        c.grid.geometry = GridGeometry::Axisymmetric;
+        c.grid.crossSectionArea = kPi * c.grid.width * c.grid.width;
+        c.time.end = 8.0;
+        c.time.outputInterval = 0.5;
+    });
+    const auto& c = run.config;
+    const double i = (c.reservoir.head - *c.column.overflowLevel) / (c.sandTop() - c.filterLevel());
+    auto closedForm = [&](const char* name) {
+        const auto& m = c.material(name);
+        const auto law = PermeabilityLaw::from(m);
+        return closed::darcyForchheimerFlux(i, law.kappa(m.porosity), law.ergunFactor(m.porosity), c.liquid.density,
+                                            c.gravity, c.liquid.viscosity);
+    };
+    const double qFine = closedForm("fine"), qCoarse = closedForm("coarse");
+    double worstFine = 0, worstCoarse = 0;
+    for (const auto& s : run.series) {
+        if (s.time < 1.0) continue;
+        worstFine = std::max(worstFine, std::abs(s.monitorFlux.at(0) / qFine - 1));
+        worstCoarse = std::max(worstCoarse, std::abs(s.monitorFlux.at(1) / qCoarse - 1));
+    }
+    EXPECT_LT(worstFine, 0.01);
+    EXPECT_LT(worstCoarse, 0.01);
+    const auto& last = run.series.back();
+    EXPECT_LT(std::abs(last.ledgerResidual), 1e-6 * last.cumulativeInflow);
+    std::printf("a core and an annulus in seepage over 8 s (axisymmetric): core within %.2f %%, annulus within %.2f %% "
+                "of their own fluxes; ledger %.1e of the inflow\n",
+                100 * worstFine, 100 * worstCoarse, std::abs(last.ledgerResidual) / last.cumulativeInflow);
+}
+
 TEST(BedExpansion2D, TheWallColumnsExpandAsTheInnerOnes) {
     // Problem 7's bed, 4 cells wide in 2D (12.4 mm cells): while the front climbs, every cell row
     // stays laterally uniform, wall columns included. The front diffusion used to stop at the side

@@ -118,6 +118,10 @@ void checkCaseBHolds(double duration, const std::function<void(CaseConfig&)>& ge
     }
     EXPECT_LE(most, 1.3 * start);
     EXPECT_GE(fewest, 0.8 * start);
+    if (c.grid.dimension == 1) {  // in 1D, near what is achieved (47..60 over 60 s from 48)
+        EXPECT_LE(most, start + 15);
+        EXPECT_GE(fewest + 5, start);
+    }
     std::printf("steady_seepage_B over %.0f s (%dD%s): monitor worst %.3f %%, gate mean %+.3f %%, ledger %.2e of the "
                 "inflow, liquid points %zu..%zu\n",
                 duration, c.grid.dimension, c.grid.geometry == GridGeometry::Axisymmetric ? " axisymmetric" : "",

@@ -125,7 +125,8 @@ TEST(Terzaghi, In2DAnd3DTheRowsFollowVerruijtAndStayLaterallyUniform) {
 }
 
 TEST(Terzaghi, AxisymmetricRowsFollowVerruijtAndStayLaterallyUniform) {
-    // the rings' stresses are integrated at the points, so a uniform state balances only to the
-    // points' quadrature: the lateral spread is small, not round-off
-    checkTerzaghiInDimension<2>(4, 0.05, 0.01, true, 1e-2, 1e-5);
+    // points side by side agree to round-off too (9.3e-16 u0 is achieved), since the grid
+    // integrates over the rings as the points do (grid/Grid.hpp); with the exact integrals the
+    // points at the axis settled 10 um differently
+    checkTerzaghiInDimension<2>(4, 0.05, 0.01, true);
 }

@@ -32,6 +32,26 @@ TEST(RunErrors, SolidReachingTheOverflowLevelIsNamed) {
     }
 }
 
+TEST(RunErrors, WaterDrainingBelowTheOverflowIsNamed) {
+    // the overflow holds the water's surface at its level; a head falling below it drains the
+    // column, and the run stops once the top row of cells is half empty, saying why
+    CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/steady_seepage_coarse");
+    c.reservoir.head = *c.column.overflowLevel;
+    c.reservoir.headRate = -0.2;  // m/s: the head falls below the overflow at once
+    c.time.end = 3.0;
+    RunOptions o;
+    o.quiet = true;
+    o.writeFiles = false;
+    try {
+        runCase(c, o);
+        FAIL() << "the run should have stopped";
+    } catch (const Error& e) {
+        const std::string what = e.what();
+        EXPECT_NE(what.find("fell below the overflow level column.overflow_level"), std::string::npos) << what;
+        EXPECT_NE(what.find("% full"), std::string::npos) << what;
+    }
+}
+
 TEST(RunErrors, TimeStepAboveTheStableOneIsRejected) {
     CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/geostatic");
     c.time.dt = 1e-3;
