@@ -50,6 +50,10 @@ constexpr const char* kPermeabilityKeys[] = {"mode", "value", "grain_size"};
 /// kg/m3: below this a grain density is taken for a unit mistake (g/cm3); the lightest
 /// granular media modelled this way (plastic beads) are about 1 000 kg/m3.
 constexpr double kMinGrainDensity = 500.0;
+// The densest packings of real sands and gravels stay above about 0.2 (equal spheres: 0.26); the
+// free water's lattice has ceil(liquid_per_cell / n_min) points per cell height, so an n_min near
+// zero asks for an unbounded number of points.
+constexpr double kMinMinPorosity = 0.05;
 constexpr const char* kLayerKeys[] = {"material", "thickness", "zones"};
 constexpr const char* kZoneKeys[] = {"material", "x", "y"};
 constexpr const char* kLiquidKeys[] = {"density",
@@ -299,6 +303,11 @@ private:
                                       "initial porosity n0, a fraction: 0.38, not 38");
         m.maxPorosity = s.optionalNumber("max_porosity", 0.41, between(0, true, 1, true));
         m.minPorosity = s.optionalNumber("min_porosity", 0.32, between(0, true, 1, true));
+        if (m.minPorosity < kMinMinPorosity)
+            s.fail("min_porosity", "value " + number(m.minPorosity) + " is implausibly small (expected >= " +
+                                       number(kMinMinPorosity) +
+                                       "; sands pack no denser than about 0.2, equal spheres 0.26): the free water "
+                                       "gets ceil(points.liquid_per_cell / min_porosity) points per cell height");
         m.youngsModulus = s.optionalNumber("youngs_modulus", 1e6, positive("Pa"));
         m.poissonRatio = s.optionalNumber("poisson_ratio", 0.3, between(0, false, 0.5, true));
         if (m.model == ConstitutiveModelKind::MohrCoulomb) {

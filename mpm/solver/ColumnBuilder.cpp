@@ -68,7 +68,9 @@ Index cellsIn(Real length, Real h) { return static_cast<Index>(std::llround(leng
 int freeWaterPointsPerCell(const CaseConfig& config) {
     Real nMin = 1.0;
     for (const auto& m : config.materials) nMin = std::min(nMin, m.minPorosity);
-    return static_cast<int>(std::ceil(config.points.liquidPerCell / nMin - 1e-9));
+    // the loader keeps n_min >= 0.05; the bound keeps the conversion defined for any config
+    const Real perCell = std::ceil(config.points.liquidPerCell / nMin - 1e-9);
+    return perCell < 1e6 ? static_cast<int>(perCell) : 1000000;
 }
 
 template <int D>

@@ -109,7 +109,7 @@ RunSize estimateRunSize(const CaseConfig& config) {
     r.peakBytes = r.solidPoints * solidBytes(D) + r.liquidCapacity * liquidBytes(D) +
                   r.nodes * nodeBytes(D) + r.cells * cellBytes(D) + stateCopy;
 
-    double updates = double(r.steps) * double(r.solidPoints + r.liquidPoints);
+    const double updates = double(r.steps) * (double(r.solidPoints) + double(r.liquidPoints));  // both may saturate
     r.wallSeconds = updates / kThroughput[std::clamp(D, 1, 3) - 1];
     if (config.reservoir.kind == ReservoirKind::OpenFoam) r.wallSeconds *= 2;
     return r;

@@ -111,6 +111,8 @@ CASES = {
                                              ["grid.cross_section_area", "disagrees", "pi width^2 = 0.004347"]),
     "geometry_misspelt": (sub("dimension = 1", 'dimension = 2\ngeometry = "axisymetric"\nwidth = 0.0372'), "check", "-",
                           ["grid.geometry", "axisymetric", "axisymmetric"]),
+    "min_porosity_near_zero": (sub("min_porosity = 0.32", "min_porosity = 1e-300"), "check|run", "-",
+                               ["materials.sand.min_porosity", "implausibly small", ">= 0.05"]),
     "zones_in_1d": (sub("thickness = 0.186", 'thickness = 0.186\n\n[[layers.zones]]\nmaterial = "sand"\nx = [0.0, 0.01]'), "check", "-", ["layers[0].zones", "dimension"]),
     "monitor_range_in_1d": (sub("elevation = 0.1116", "elevation = 0.1116\nx = [0.0, 0.01]"), "check", "-", ["monitors[0].x"]),
     "duplicate_monitor_names": (BASE + '\n[[monitors]]\nname = "mid"\nelevation = 0.05\n', "check", "-", ["monitors[1].name", "unique"]),
