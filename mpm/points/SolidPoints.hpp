@@ -25,6 +25,7 @@ struct SolidPoints {
     std::vector<int> state;       ///< PointState
     std::vector<int> material;    ///< index into the solver's material table
     std::vector<Real> internal;   ///< constitutive state variables [point][internalCount]
+    std::vector<Real> velocityGradient;  ///< 1/s, C = grad v at the point [point][D*D] (APIC)
 
     ShapeCache<D> shape;          ///< per-step scratch, not part of the state
     std::vector<int> stressReturn;  ///< per-step scratch: the StressReturn of the last update
@@ -36,7 +37,7 @@ struct SolidPoints {
     template <class F>
     void forEachField(F&& f) {
         f(x, D); f(v, D); f(mass, 1); f(volume, 1); f(porosity, 1); f(stress, 6);
-        f(state, 1); f(material, 1); f(internal, internalCount);
+        f(state, 1); f(material, 1); f(internal, internalCount); f(velocityGradient, D * D);
     }
 };
 

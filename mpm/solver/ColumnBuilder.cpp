@@ -50,6 +50,7 @@ void appendSolid(SolidPoints<D>& s, const Vec<D>& x, Real V, Real n, Real rhoS, 
     s.state.push_back(state);
     s.material.push_back(material);
     for (int k = 0; k < s.internalCount; ++k) s.internal.push_back(0);
+    for (int k = 0; k < D * D; ++k) s.velocityGradient.push_back(0);
 }
 
 template <int D>

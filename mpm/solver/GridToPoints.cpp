@@ -1,4 +1,4 @@
-// Phases 5 and 6 of the double-point step: FLIP velocities, positions, strains and the
+// Phases 5 and 6 of the double-point step: APIC (solid) and FLIP (liquid) velocities, positions, strains and the
 // constitutive update of the points, then the pore-pressure increment of every cell
 // (physics.md section 2).
 #include <algorithm>
@@ -14,7 +14,7 @@
 namespace qs {
 
 // ---------------------------------------------------------------------------------------------
-// 5 grid to points: FLIP velocities, positions, strains, constitutive update
+// 5 grid to points: velocities (solid APIC, liquid FLIP), positions, strains, constitutive update
 // ---------------------------------------------------------------------------------------------
 
 template <int D>
@@ -27,13 +27,12 @@ void DoublePointSolver<D>::gridToPoints() {
     // axis only when something pushes it there: v_r vanishes on the axis)
     if (axisymmetric) lowest[0] = 1e-6 * grid_.h();
     forAll(static_cast<Index>(solid_.size()), [&](Index p) {
-        Real dv[D] = {}, vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
+        Real vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
         bool diffuses = true, held[D] = {};
         forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
                       &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
                 const Real v = velS_[i * D + d];
-                dv[d] += N * (v - velSOld_[i * D + d]);
                 vNew[d] += N * v;
                 for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
                 gradPhi[d] -= gradN[d] * sandPorosity_[i];
@@ -45,13 +44,19 @@ void DoublePointSolver<D>::gridToPoints() {
         const Index cell = solid_.shape.cell[p];
         const Real radius = solid_.x[p * D];  // where the shape functions were taken
         for (int d = 0; d < D; ++d) {
-            solid_.v[p * D + d] += dv[d];  // FLIP: PIC would smear the jumps at porosity interfaces
-            // the front diffusion moves the point; it is not part of its (FLIP) velocity. Next to a
+            // APIC: the point takes the grid's velocity and its gradient (next to it, C = L), so
+            // that its next transfer hands back the grid's linear field instead of smearing it (PIC)
+            // or keeping velocities of its own the grid cannot see (FLIP: in sand without effective
+            // stress those grew from round-off at 3 /s into an odd-even lateral mode in 2D and 3D)
+            solid_.v[p * D + d] = vNew[d];
+            // the front diffusion moves the point; it is not part of its velocity. Next to a
             // wall it does not move it towards or away from the wall: no flux through the wall,
             // whatever the field beside it (the gradient there is one-sided)
             const Real w = diffuses && !held[d] ? -cellDiffusivity_[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
             solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), lowest[d], extent[d]);
         }
+        for (int d = 0; d < D; ++d)
+            for (int e = 0; e < D; ++e) solid_.velocityGradient[p * D * D + d * D + e] = L[d][e];  // APIC's C
         Real dEps[6] = {};
         for (int d = 0; d < D; ++d)
             for (int e = d; e < D; ++e)
@@ -128,7 +133,7 @@ void DoublePointSolver<D>::gridToPoints() {
         const Real k = diffuses ? cellDiffusivity_[liquid_.shape.cell[p]] / std::max(Real(1e-3), 1 - sand) : 0;
         if (axisymmetric) div += vNew[0] / liquid_.x[p * D];  // the hoop strain rate v_r / r
         for (int d = 0; d < D; ++d) {
-            liquid_.v[p * D + d] += dv[d];
+            liquid_.v[p * D + d] += dv[d];  // FLIP
             // the liquid's share of the front diffusion: the mixture's volume flux stays
             const Real w = diffuses && !held[d] ? (1 - mixture) / mixture * k * gradPhi[d] : 0;
             const Real moved = dt * (vNew[d] + w);

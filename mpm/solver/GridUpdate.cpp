@@ -191,7 +191,6 @@ void DoublePointSolver<D>::solveNodes() {
             } else if (mS > 0) {
                 vS = masks_.solidFixed[k] ? 0.0 : vS1;
             }
-            velSOld_[k] = vS0;
             velLOld_[k] = vL0;
             velS_[k] = vS;
             velL_[k] = vL;

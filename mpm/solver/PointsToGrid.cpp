@@ -162,6 +162,8 @@ void DoublePointSolver<D>::pointsToGrid() {
         const Real b = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
         const Real* s = &solid_.stress[p * 6];
         const Real* v = &solid_.v[p * D];
+        const Real* C = &solid_.velocityGradient[p * D * D];
+        const Real* xp = &solid_.x[p * D];
         // axisymmetry: the hoop stress pulls the ring towards the axis, sigma_tt N_i / r on the
         // radial component (Voigt yy is the hoop direction, theta)
         const Real hoop = axisymmetric ? s[1] * V / solid_.x[p * D] : 0.0;
@@ -172,8 +174,14 @@ void DoublePointSolver<D>::pointsToGrid() {
             solidVolume_[i] += N * grains;
             dragA_[i] += N * a;
             dragB_[i] += N * b;
+            // APIC: the point's linear velocity field taken to the node, v_p + C_p (x_i - x_p)
+            const IVec<D> node = grid_.nodeCoords(i);
+            Real dx[D];
+            for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(node[e]) - xp[e];
             for (int d = 0; d < D; ++d) {
-                momS_[i * D + d] += N * m * v[d];
+                Real vi = v[d];
+                for (int e = 0; e < D; ++e) vi += C[d * D + e] * dx[e];
+                momS_[i * D + d] += N * m * vi;
                 Real f = 0;
                 for (int e = 0; e < D; ++e) f += s[voigt(axis3<D>(d), axis3<D>(e))] * gradN[e];
                 forceS_[i * D + d] -= f * V;

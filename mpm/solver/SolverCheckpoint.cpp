@@ -34,13 +34,20 @@ void putSet(CheckpointData& data, const std::string& prefix, Set& set) {
 // before the first step; found by fuzzing (tests/fuzz/fuzz_checkpoint_state.cpp).
 const char* const kNotThisCase = ": the checkpoint is damaged or of another case";
 
+/// Fields from index firstOptional on may be missing (a checkpoint written before they existed):
+/// they start at zero.
 template <class Set>
-void getSet(const CheckpointData& data, const std::string& prefix, Set& set, int dimension) {
+void getSet(const CheckpointData& data, const std::string& prefix, Set& set, int dimension,
+            int firstOptional = std::numeric_limits<int>::max()) {
     int k = 0;
     std::size_t points = 0;
     set.forEachField([&](auto& field, int components) {
         using T = typename std::decay_t<decltype(field)>::value_type;
         const std::string name = prefix + "_field" + std::to_string(k++);
+        if (k - 1 >= firstOptional && !data.has(name)) {
+            field.assign(points * static_cast<std::size_t>(components), T{});
+            return;
+        }
         std::size_t size = 0;
         if constexpr (std::is_same_v<T, double>) {
             const auto& v = data.doubles(name);
@@ -133,7 +140,9 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     QS_CHECK(std::abs(data.scalar("dt") - dt_) <= 1e-12 * dt_,
              "the checkpoint was written with dt = " << data.scalar("dt") << " s, the case now gives "
                                                      << dt_ << " s: grid or material data changed");
-    getSet(data, "solid", solid_, D);
+    // the solid's velocity gradient (APIC, field 9) came on 2026-12-02: an older checkpoint's
+    // points start with C = 0, a PIC transfer for their first step
+    getSet(data, "solid", solid_, D, 9);
     getSet(data, "liquid", liquid_, D);
     requireCodes(solid_.state, 2, "solid state");
     requireCodes(solid_.material, static_cast<int>(materials_.size()), "material");
