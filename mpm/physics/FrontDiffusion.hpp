@@ -17,7 +17,7 @@
 // the drag-dominated limit, a kinematic one: the points move with
 //   v_S + w_S,  w_S = -D grad(phi) / phi   (solid: a Fickian flux -D grad phi)
 //   v_L + w_L,  w_L = -(1 - n) w_S / n     (liquid: the mixture's volume flux is unchanged)
-// added to their displacement, not to their (FLIP) velocity nor to their strain: momentum, the
+// added to their displacement, not to their velocity nor to their strain: momentum, the
 // pressure equation and both phases' mass are untouched. (Points the diffusion moves take their
 // porosity from the grid, which sees the displacement; the liquid points' volume does not.)
 //

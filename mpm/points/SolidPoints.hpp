@@ -34,6 +34,10 @@ struct SolidPoints {
 
     std::size_t size() const { return mass.size(); }
 
+    /// The index of velocityGradient among forEachField's fields: checkpoints written before it
+    /// existed (2026-12-02) have none (solver/SolverCheckpoint.cpp)
+    static constexpr int kVelocityGradientField = 9;
+
     template <class F>
     void forEachField(F&& f) {
         f(x, D); f(v, D); f(mass, 1); f(volume, 1); f(porosity, 1); f(stress, 6);

@@ -127,7 +127,8 @@ void DoublePointSolver<D>::allocate() {
     const std::size_t liquidCapacity = static_cast<std::size_t>(
         qs::liquidCapacity(config_, nc, static_cast<std::int64_t>(liquid_.size())));
     reservePoints(liquid_, liquidCapacity, scratch_, 6);
-    reservePoints(solid_, solid_.size(), scratch_, 6);
+    // the reorder's scratch holds the widest field: the stress (6), C (D x D) or the internal state
+    reservePoints(solid_, solid_.size(), scratch_, std::max({6, D * D, solid_.internalCount}));
     scratch_.reals.reserve(liquidCapacity * 6);
     scratch_.ints.reserve(liquidCapacity);
     scratch_.order.reserve(liquidCapacity);
@@ -176,6 +177,7 @@ void DoublePointSolver<D>::runGravityStage() {
     time_ = 0;
     steps_ = 0;
     std::fill(solid_.v.begin(), solid_.v.end(), 0.0);
+    std::fill(solid_.velocityGradient.begin(), solid_.velocityGradient.end(), 0.0);  // APIC's C: at rest too
     std::fill(liquid_.v.begin(), liquid_.v.end(), 0.0);
     std::fill(relSpeed_.begin(), relSpeed_.end(), 0.0);
     cumulativeInflow_ = outflowVolume_ = 0;

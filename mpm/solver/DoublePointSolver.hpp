@@ -16,7 +16,7 @@
 //   4 solveNodes          predictors, implicit drag, filter / walls / gate
 //   4b switchLiquidState  per cell: solid or fluidised (physics/LiquidStateRule.hpp)
 //   4c diffuseFronts      kinematic diffusion where the sand carries no stress (FrontDiffusion)
-//   5 gridToPoints        FLIP velocities, positions, strains, stress, porosity, liquid volume
+//   5 gridToPoints        velocities (solid APIC, liquid FLIP), positions, strains, stress, porosity, liquid volume
 //   6 updatePressure      cell pore-pressure increment from the mixed volumetric strain
 //   7 exchangeAtBoundaries  inflow injection, outflow removal, ledger, reservoir
 //   8 checkHealth         a non-finite value, a runaway point, a porosity outside (0, 1) stops the run

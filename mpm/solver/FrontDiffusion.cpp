@@ -12,7 +12,7 @@
 //   w_S = -D grad(phi) / phi   (grad from the shape-function gradients: compact, so that no
 //                               grid mode of phi, the odd-even one included, escapes it)
 //   w_L = -(1 - n) w_S / n     (the liquid: the mixture's volume flux is unchanged)
-// added to the displacement, not to the (FLIP) velocity.
+// added to the displacement, not to the velocity.
 #include "solver/DoublePointSolver.hpp"
 #include "solver/Parallel.hpp"
 

@@ -33,8 +33,9 @@ void DoublePointSolver<D>::checkHealth() const {
     };
     auto solidProblem = [&](Index p) -> const char* {
         if (!finiteAll<D>(&solid_.x[p * D], D) || !finiteAll<D>(&solid_.v[p * D], D) ||
-            !finiteAll<D>(&solid_.stress[p * 6], 6) || !std::isfinite(solid_.porosity[p]))
-            return "a non-finite position, velocity, stress or porosity";
+            !finiteAll<D>(&solid_.stress[p * 6], 6) || !std::isfinite(solid_.porosity[p]) ||
+            !finiteAll<D>(&solid_.velocityGradient[p * D * D], D * D))
+            return "a non-finite position, velocity, velocity gradient, stress or porosity";
         if (speed(&solid_.v[p * D]) >= fastest) return "a velocity of more than a cell per step";
         if (!(solid_.porosity[p] > 0 && solid_.porosity[p] < 1)) return "a porosity outside (0, 1)";
         if (solid_.x[p * D + D - 1] >= top) return "reached the top of the grid";

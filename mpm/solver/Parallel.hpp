@@ -99,8 +99,11 @@ void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellSta
 /// The loops are nested per axis (no index arithmetic per node: the flat loop's divisions cost
 /// more than the work in 3D), and the products keep the order of the tensor product
 /// N = (w_0 w_1) w_2, dN/dx_a = dw_a times the other axes' w in ascending order.
+/// forStencilOffsets calls f(node, N, gradN, offset) with the node's place in the stencil per
+/// axis (offset[d] in 0..2, the node at start's coordinates + offset), for a transfer that needs
+/// the node's position without dividing its index.
 template <int D, class F>
-inline void forStencil(const Grid<D>& grid, const Index start, const Real* w, const Real* dw, F&& f) {
+inline void forStencilOffsets(const Grid<D>& grid, const Index start, const Real* w, const Real* dw, F&& f) {
     int lo[D], hi[D];
     for (int d = 0; d < D; ++d) {
         int first = 0, last = 2;
@@ -113,7 +116,8 @@ inline void forStencil(const Grid<D>& grid, const Index start, const Real* w, co
         for (int i = lo[0]; i <= hi[0]; ++i) {
             const Real N = w[i], grad[1] = {dw[i]};
             if (N == 0 && grad[0] == 0) continue;
-            f(start + i, N, grad);
+            const int offset[1] = {i};
+            f(start + i, N, grad, offset);
         }
     } else if constexpr (D == 2) {
         const Index sy = grid.nodeStride(1);
@@ -124,7 +128,8 @@ inline void forStencil(const Grid<D>& grid, const Index start, const Real* w, co
                 const Real wx = w[i], dwx = dw[i];
                 const Real N = wx * wy, grad[2] = {dwx * wy, dwy * wx};
                 if (N == 0 && grad[0] == 0 && grad[1] == 0) continue;
-                f(row + i, N, grad);
+                const int offset[2] = {i, j};
+                f(row + i, N, grad, offset);
             }
         }
     } else {
@@ -139,11 +144,17 @@ inline void forStencil(const Grid<D>& grid, const Index start, const Real* w, co
                     const Real N = (wx * wy) * wz;
                     const Real grad[3] = {(dwx * wy) * wz, (dwy * wx) * wz, (dwz * wx) * wy};
                     if (N == 0 && grad[0] == 0 && grad[1] == 0 && grad[2] == 0) continue;
-                    f(row + i, N, grad);
+                    const int offset[3] = {i, j, k};
+                    f(row + i, N, grad, offset);
                 }
             }
         }
     }
+}
+
+template <int D, class F>
+inline void forStencil(const Grid<D>& grid, const Index start, const Real* w, const Real* dw, F&& f) {
+    forStencilOffsets<D>(grid, start, w, dw, [&](Index i, Real N, const Real* gradN, const int*) { f(i, N, gradN); });
 }
 
 }  // namespace qs

@@ -167,17 +167,18 @@ void DoublePointSolver<D>::pointsToGrid() {
         // axisymmetry: the hoop stress pulls the ring towards the axis, sigma_tt N_i / r on the
         // radial component (Voigt yy is the hoop direction, theta)
         const Real hoop = axisymmetric ? s[1] * V / solid_.x[p * D] : 0.0;
-        forStencil<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
-                      &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+        // APIC: the stencil's first node, where the node offsets count from (one division per point)
+        const IVec<D> first = grid_.nodeCoords(solid_.shape.start[p]);
+        forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                             &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN, const int* offset) {
             if (i < firstSolidNode) return;
             massS_[i] += N * m;
             solidVolume_[i] += N * grains;
             dragA_[i] += N * a;
             dragB_[i] += N * b;
             // APIC: the point's linear velocity field taken to the node, v_p + C_p (x_i - x_p)
-            const IVec<D> node = grid_.nodeCoords(i);
             Real dx[D];
-            for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(node[e]) - xp[e];
+            for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(first[e] + offset[e]) - xp[e];
             for (int d = 0; d < D; ++d) {
                 Real vi = v[d];
                 for (int e = 0; e < D; ++e) vi += C[d * D + e] * dx[e];

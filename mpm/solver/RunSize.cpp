@@ -30,7 +30,7 @@ std::int64_t cellsIn(double length, double h) { return saturatedCount(std::round
 // Bytes per point or per grid entity, from the fields the solver keeps (double = 8, Index = 8,
 // int = 4, char = 1); D is the grid dimension.
 double solidBytes(int D) {
-    const double state = 8.0 * (2 * D + 3 + 6) + 4 + 4;  // x, v, mass, volume, porosity, stress; state, material
+    const double state = 8.0 * (2 * D + 3 + 6 + D * D) + 4 + 4;  // x, v, mass, volume, porosity, stress, C; state, material
     const double shape = 8 + 8 + 8.0 * 6 * D;            // cell, start, w and dw (3 per axis)
     return state + shape;
 }
@@ -105,7 +105,7 @@ RunSize estimateRunSize(const CaseConfig& config) {
 
     // The solver's arrays, and one more copy of the point state (a checkpoint being written, or
     // the rollback copy of an implicit coupling window).
-    const double stateCopy = r.solidPoints * 8.0 * (2 * D + 11) + r.liquidCapacity * 8.0 * (2 * D + 4);
+    const double stateCopy = r.solidPoints * 8.0 * (2 * D + 11 + D * D) + r.liquidCapacity * 8.0 * (2 * D + 4);
     r.peakBytes = r.solidPoints * solidBytes(D) + r.liquidCapacity * liquidBytes(D) +
                   r.nodes * nodeBytes(D) + r.cells * cellBytes(D) + stateCopy;
 

@@ -175,8 +175,10 @@ TEST(BedExpansion2D, TheBedStaysLaterallyUniformAsTheFrontClimbs) {
     // - FLIP velocities of the solid: in the stress-free sand above the front the points kept
     //   velocities of their own that the grid cannot see, and an odd-even mode across the columns
     //   of cells grew from round-off at 3 /s (spread 2e-12 at 3 s, 6e-4 at 10 s, 0.04 by 12 s). With
-    //   APIC (the point takes the grid's velocity and gradient) it stays at 5e-9 (1e-14 until a
-    //   state switch at 5.5 s leaves that step).
+    //   APIC (the point takes the grid's velocity and gradient) it stays at 7e-9 (1e-14 until a
+    //   state switch at 5.5 s leaves that step). The points' lateral velocities are watched as
+    //   well: the porosity of stress-free points comes from the nodes, which average neighbouring
+    //   columns, so the mode shows in the velocities first (FLIP: 1e-5 m/s at 9 s).
     CaseConfig c = loadVerificationCase("bed_expansion");
     c.grid.cellSize = 0.0124;
     c.column.chamberHeight = 0.0248;
@@ -210,9 +212,12 @@ TEST(BedExpansion2D, TheBedStaysLaterallyUniformAsTheFrontClimbs) {
     for (const auto& [row, range] : rows) spread = std::max(spread, range.second - range.first);
     ASSERT_GT(expanded, 0.44) << "the bed has not started to expand";
     EXPECT_LT(spread, 1e-7);  // FLIP: 6e-4
-    EXPECT_LT(spread, 2e-8);  // achieved 5.4e-9
-    std::printf("2D bed expansion at 10 s: loosest cell n = %.4f, largest lateral spread of a row's cells %.1e\n",
-                expanded, spread);
+    EXPECT_LT(spread, 2e-8);  // achieved 7.4e-9
+    double lateral = 0;
+    for (std::size_t p = 0; p < s.size(); ++p) lateral = std::max(lateral, std::abs(s.v[p * 2]));
+    EXPECT_LT(lateral, 1e-9);  // m/s
+    std::printf("2D bed expansion at 10 s: loosest cell n = %.4f, largest lateral spread of a row's cells %.1e, "
+                "fastest lateral point %.1e m/s\n", expanded, spread, lateral);
 }
 
 TEST(PressureCheckerboard, ACheckerboardOfCellPressuresDies) {
