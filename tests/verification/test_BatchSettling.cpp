@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <functional>
 
 #include "VerificationCase.hpp"
 #include "physics/DriftFlux.hpp"
@@ -20,8 +21,12 @@ namespace {
 
 struct Errors { double height, top, front, meeting; };
 
-Errors runSettling(double cellSize) {
-    const CaseRun run = runVerificationCase("batch_settling", [&](CaseConfig& c) { c.grid.cellSize = cellSize; });
+/// Problem 9 on cells of cellSize; `edit` may then change the column (its geometry).
+Errors runSettling(double cellSize, const std::function<void(CaseConfig&)>& edit = {}) {
+    const CaseRun run = runVerificationCase("batch_settling", [&](CaseConfig& c) {
+        c.grid.cellSize = cellSize;
+        if (edit) edit(c);
+    });
     const auto& c = run.config;
     const auto& m = c.material("sand");
     const auto flux = closed::SuspensionFlux::of(c, m);
@@ -50,9 +55,10 @@ Errors runSettling(double cellSize) {
     const auto line = fitLine(rows, [](const CellRow& r) { return -r.verticalStress; });
     const double unitWeight = (1 - m.maxPorosity) * (m.grainDensity - c.liquid.density) * c.gravity;
     EXPECT_NEAR(-line.second, unitWeight, 0.05 * unitWeight);
-    std::printf("batch settling, h = %.4g m: final height %+.2f %%, top speed %+.2f %%, sediment front %+.2f %%, "
+    std::printf("batch settling (%dD%s), h = %.4g m: final height %+.2f %%, top speed %+.2f %%, sediment front %+.2f %%, "
                 "meeting time %+.2f %%\n",
-                cellSize, 100 * err.height, 100 * err.top, 100 * err.front, 100 * err.meeting);
+                c.grid.dimension, c.grid.geometry == GridGeometry::Axisymmetric ? " axisymmetric" : "", cellSize,
+                100 * err.height, 100 * err.top, 100 * err.front, 100 * err.meeting);
     return err;
 }
 
@@ -73,3 +79,25 @@ TEST(BatchSettling, ShippedGrid) {
     EXPECT_LT(std::abs(e.top), 0.005);
     EXPECT_LT(std::abs(e.front), 0.10);
 }
+
+// The same settling in 2D plane strain and in a cylinder, 2 cells across, on the shipped grid (on
+// 12.4 mm cells the 1D run itself misses the front's tolerance: -15.5 %, meeting +20 %), with the
+// 1D tolerances and guards. The water's surface is held by an overflow at its level: the column
+// is closed and the water's volume does not change, so nothing flows over it, but a free surface
+// without an overflow is not yet held in 2D (docs/fluidisation.md): its points drifted until the
+// run stopped at 14 to 22 s.
+class BatchSettlingIn : public ::testing::TestWithParam<Geometry> {};
+
+TEST_P(BatchSettlingIn, MatchesKynchAsIn1D) {
+    const Errors e = runSettling(0.0062, [](CaseConfig& c) {
+        inGeometry(c, GetParam());
+        c.column.overflowLevel = c.column.waterLevel;
+    });
+    expectWithinTolerances(e);
+    EXPECT_LT(std::abs(e.height), 0.015);
+    EXPECT_LT(std::abs(e.top), 0.005);
+    EXPECT_LT(std::abs(e.front), 0.10);
+}
+
+INSTANTIATE_TEST_SUITE_P(Geometries, BatchSettlingIn, ::testing::Values(Geometry::Plane2D, Geometry::Axisymmetric),
+                         geometryName);
