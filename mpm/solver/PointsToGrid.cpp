@@ -152,6 +152,7 @@ void DoublePointSolver<D>::pointsToGrid() {
     // and with one point per cell a stalled, consolidation above the closed base).
     const Index firstSolidNode = sandBottomRow_ * grid_.nodeStride(D - 1);
     const bool axisymmetric = grid_.axisymmetric();
+    const bool gimp = config_.grid.shapeFunctions == ShapeFunctionKind::Gimp;
     forEachPointColoured(grid_, solidCellStart_, [&](Index p) {
         const Real m = solid_.mass[p], V = solid_.volume[p];
         const auto& mat = materials_[solid_.material[p]];
@@ -169,6 +170,23 @@ void DoublePointSolver<D>::pointsToGrid() {
         const Real hoop = axisymmetric ? s[1] * V / solid_.x[p * D] : 0.0;
         // APIC: the stencil's first node, where the node offsets count from (one division per point)
         const IVec<D> first = grid_.nodeCoords(solid_.shape.start[p]);
+        // The affine term is taken about the mean position of the nodes the point reaches. For
+        // linear shape functions that is the point itself; a uGIMP stencil clipped at a wall or
+        // at the filter (the nodes below it) has sum N (x_i - x_p) != 0, and about x_p the term
+        // would add momentum there
+        Real centre[D];
+        for (int e = 0; e < D; ++e) centre[e] = xp[e];
+        if (gimp) {
+            Real sum = 0, moment[D] = {};
+            forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                                 &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*, const int* offset) {
+                if (i < firstSolidNode) return;
+                sum += N;
+                for (int e = 0; e < D; ++e) moment[e] += N * grid_.nodePosition(first[e] + offset[e]);
+            });
+            if (sum > 0)
+                for (int e = 0; e < D; ++e) centre[e] = moment[e] / sum;
+        }
         forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
                              &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN, const int* offset) {
             if (i < firstSolidNode) return;
@@ -178,7 +196,7 @@ void DoublePointSolver<D>::pointsToGrid() {
             dragB_[i] += N * b;
             // APIC: the point's linear velocity field taken to the node, v_p + C_p (x_i - x_p)
             Real dx[D];
-            for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(first[e] + offset[e]) - xp[e];
+            for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(first[e] + offset[e]) - centre[e];
             for (int d = 0; d < D; ++d) {
                 Real vi = v[d];
                 for (int e = 0; e < D; ++e) vi += C[d * D + e] * dx[e];
