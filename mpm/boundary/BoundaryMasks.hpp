@@ -63,20 +63,4 @@ Real nodeFootprint(const Grid<D>& grid, Index node) {
     return grid.nodeFootprint(node);
 }
 
-/// Adds the force of a uniform vertical pressure acting downwards on a horizontal surface at
-/// elevation z: F_i = -p N_i(z) A_i on the vertical component (a traction in the weak form).
-template <int D>
-void addSurfaceTraction(const Grid<D>& grid, std::vector<Real>& force, Real z, Real pressure) {
-    const Real h = grid.h();
-    const Index row = std::clamp<Index>(static_cast<Index>(std::floor(z / h)), 0, grid.cells(D - 1) - 1);
-    const Real xi = z / h - row;
-    const Index stride = grid.nodeStride(D - 1);
-    for (Index nz : {row, row + 1}) {
-        const Real N = nz == row ? 1 - xi : xi;
-        if (N == 0) continue;
-        for (Index i = nz * stride; i < (nz + 1) * stride; ++i)
-            force[i * D + D - 1] -= pressure * N * nodeFootprint(grid, i);
-    }
-}
-
 }  // namespace qs

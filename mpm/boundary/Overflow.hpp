@@ -36,13 +36,14 @@ Real removeLiquidAbove(Real zOverflow, Real density, LiquidPoints<D>& liquid, st
 }
 
 /// Solid reaching the overflow means the bed expanded beyond the column: an error naming it.
-template <int D>
-void checkSolidBelow(Real zOverflow, const SolidPoints<D>& solid, Real time, Real sandSurface) {
+/// `sandSurface()` gives the surface for the message (taken only then: it is a pass over the points).
+template <int D, class Surface>
+void checkSolidBelow(Real zOverflow, const SolidPoints<D>& solid, Real time, Surface&& sandSurface) {
     for (std::size_t p = 0; p < solid.size(); ++p) {
         if (solid.x[p * D + D - 1] <= zOverflow) continue;
         std::ostringstream s;
         s << "solid points reached the overflow level column.overflow_level = " << zOverflow
-          << " m at t = " << time << " s (sand surface " << sandSurface
+          << " m at t = " << time << " s (sand surface " << sandSurface()
           << " m): the bed expanded beyond the column; raise the overflow level and the grid top";
         throw Error(s.str());
     }

@@ -20,7 +20,7 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
 
     if (config_.column.overflowLevel) {
         const Real zOver = *config_.column.overflowLevel;
-        checkSolidBelow(zOver, solid_, time_, sandSurface());
+        checkSolidBelow(zOver, solid_, time_, [&] { return sandSurface(); });
         const Real out = removeLiquidAbove(zOver, config_.liquid.density, liquid_, dropFlags_);
         if (out > 0) {
             outflowVolume_ += out;

@@ -118,7 +118,7 @@ void DoublePointSolver<D>::allocate() {
     cellStressFree_.assign(nc, 0);
     cellSandSurface_.assign(nc, 0);
     cellDiffusivity_.assign(nc, 0.0);
-    for (auto* a : {&cellLiquidVolume_, &cellPressure_, &cellWeight_, &cellPorosity_, &cellSandPorosity_,
+    for (auto* a : {&cellLiquidVolume_, &cellFill_, &cellPressure_, &cellWeight_, &cellPorosity_, &cellSandPorosity_,
                     &cellPressureIncrement_})
         a->assign(nc, 0.0);
     cellPressureGradient_.assign(nc * D, 0.0);

@@ -147,7 +147,7 @@ private:
     /// The share of a node's footprint inside horizontal ranges (1 without them).
     Real footprintShare(Index node, const std::optional<HorizontalRange>& x,
                         const std::optional<HorizontalRange>& y) const;
-    bool liquidFilled(Index node) const;
+    Real waterVolumeAt(Index node) const;
     Real gateVelocityNow() const;
     void uniformGateVelocity(Real resistance);
 
@@ -163,7 +163,7 @@ private:
     std::vector<Index> solidCellStart_, liquidCellStart_, counts_;
     std::vector<char> cellActive_, cellSubmerged_, cellFluidised_, cellStressFree_, cellSandSurface_;
     std::vector<Real> cellDiffusivity_;
-    std::vector<Real> cellLiquidVolume_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,
+    std::vector<Real> cellLiquidVolume_, cellFill_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,
         cellPressureGradient_, cellPressureIncrement_;
 
     // nodes (vectors are [node][axis])

@@ -6,6 +6,7 @@
 
 #include "solver/DoublePointSolver.hpp"
 #include "boundary/Overflow.hpp"
+#include "boundary/Surcharge.hpp"
 #include "solver/Parallel.hpp"
 
 namespace qs {
@@ -121,11 +122,13 @@ void DoublePointSolver<D>::computeForces() {
         }
     }
 
-    // Surcharge on the sand top (solid phase), as a traction at the sand surface. The water's
-    // surface needs none: with an overflow it is held at the overflow level, where the top cells
-    // count as full (classifyCells) and the natural zero-traction condition holds.
+    // Surcharge on the sand top (solid phase), as a traction where the sand's surface is in each
+    // column of cells (boundary/Surcharge.hpp). The water's surface needs none: with an overflow
+    // it is held at the overflow level, where the top cells count as full (classifyCells), and
+    // the natural zero-traction condition holds at a free surface.
     const Real q = surchargeNow();
-    if (q != 0) addSurfaceTraction(grid_, forceS_, sandSurface(), q);
+    if (q != 0)
+        addSurcharge(grid_, solid_, solidCellStart_, config_.points.solidPerCell, config_.filterLevel(), q, forceS_);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -11,6 +11,14 @@
 
 namespace qs {
 
+namespace {
+/// -, the fill of a cell (its water over its pores) from which the cell below it counts as below
+/// the free surface: more than a stray point or two (the free water holds lpc^(D-1) n_z points a
+/// cell, n_z = lpc / n_min: 7 in 1D, 14 in 2D for the shipped cases), less than any cell of a
+/// connected water body, whose points bunch by -15 % at most
+constexpr Real kSubmergingFill = 0.25;
+}  // namespace
+
 // ---------------------------------------------------------------------------------------------
 // 1 sort points by cell, classify cells
 // ---------------------------------------------------------------------------------------------
@@ -65,18 +73,25 @@ template <int D>
 void DoublePointSolver<D>::classifyCells() {
     const Index nc = grid_.numCells();
     forAll(nc, [&](Index c) {
-        Real vol = 0;
+        Real vol = 0, grains = 0;
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) vol += liquid_.volume[p];
+        for (Index p = solidCellStart_[c]; p < solidCellStart_[c + 1]; ++p)
+            grains += solid_.mass[p] / materials_[solid_.material[p]].grainDensity;
         cellLiquidVolume_[c] = vol;
+        const Real pores = grid_.cellVolume(c) - grains;
+        cellFill_[c] = pores > 0 ? std::min(Real(1), vol / pores) : Real(1);
         cellActive_[c] = (liquidCellStart_[c + 1] > liquidCellStart_[c]) ||
                          (solidCellStart_[c + 1] > solidCellStart_[c]);
     });
-    // A cell is below the free surface when the cell above holds liquid, or when it is a cell of
-    // the top row below the overflow level and holds liquid: the overflow holds the water's
-    // surface at its level (a node row), so the water's top cells are full however few points
-    // they hold at the moment. There the cell's liquid points share the whole cell,
-    // V* = V_cell V / sum V, so they fill the pores and a half-empty chamber cell carries no
-    // multiple of the gate pressure; above the free surface V* = V (physics.md).
+    // A cell is below the free surface when the cell above holds a quarter of its pores' worth
+    // of water or more (kSubmergingFill), or when it is a cell of the top row below the overflow
+    // level and holds liquid: the overflow holds the water's surface at its level (a node row), so
+    // the water's top cells are full however few points they hold at the moment. There the
+    // cell's liquid points share the whole cell, V* = V_cell V / sum V, so they fill the pores and
+    // a half-empty chamber cell carries no multiple of the gate pressure; above the free surface
+    // V* = V (physics.md). A few stray points above (spray, a drop falling back) do not make a
+    // half-filled cell full: decided by any liquid above, one point above doubled the cell's
+    // pressure weight (test FreeSurface.AStrayPointAboveLeavesThePorePressureBelowAsItWas).
     // Deciding the overflow's top row from its points instead (thin: a free surface) made it a
     // moving, point-sampled surface: in 2D its cells flipped between full and thin as the points
     // passing through came and went, which pumped energy into the free water (lateral velocities
@@ -87,12 +102,12 @@ void DoublePointSolver<D>::classifyCells() {
     forAll(nc, [&](Index c) {
         const Index row = (c / up) % rows;
         const bool holdsLiquid = liquidCellStart_[c + 1] > liquidCellStart_[c];
-        const bool above = (row + 1 < rows && liquidCellStart_[c + up + 1] > liquidCellStart_[c + up]) ||
+        const bool above = (row + 1 < rows && cellFill_[c + up] >= kSubmergingFill) ||
                            (row + 1 == overflowRow_ && holdsLiquid);
         cellSubmerged_[c] = above;
         const Real volume = grid_.cellVolume(c);
         const Real scale = above && cellLiquidVolume_[c] > 0 ? volume / cellLiquidVolume_[c] : 1.0;
-        const bool thin = cellLiquidVolume_[c] < config_.liquid.freeSurfaceFilling * volume;
+        const bool thin = cellFill_[c] < config_.liquid.freeSurfaceFilling;
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
             liquid_.weight[p] = liquid_.volume[p] * scale;
             liquid_.state[p] = (!above && thin) ? kFreeSurfaceLiquid : kSubmergedLiquid;
@@ -121,20 +136,23 @@ void DoublePointSolver<D>::classifyCells() {
 // 2 points to grid
 // ---------------------------------------------------------------------------------------------
 
-/// Whether the node's pores are full: every cell around it is below the free surface and holds
-/// liquid. The cells above the overflow level do not count (no water stands there), so the node
-/// row of the overflow level is full when the cells below it are.
+/// m3, the volume of water a node carries: each cell around it gives its share of the node's
+/// volume as if its water filled the bottom of its pores to the cell's fill f (level within the
+/// cell; f = 1 below the free surface): f^2 of the share to the cell's top nodes, 2f - f^2 to its bottom nodes (the integrals
+/// of the linear N over the wet part), the whole share where the cell is full. The cells at and
+/// above the overflow level do not count (no water stands there).
 template <int D>
-bool DoublePointSolver<D>::liquidFilled(Index node) const {
-    if (!config_.liquid.gridLiquidMass) return false;
-    if (node < grid_.nodeStride(D - 1)) return false;  // the gate plane: the chamber's gap is empty
-    bool filled = true, any = false;
-    grid_.forEachCellOfNode(node, [&](Index cell, int) {
+Real DoublePointSolver<D>::waterVolumeAt(Index node) const {
+    Real volume = 0;
+    grid_.forEachCellOfNode(node, [&](Index cell, int corner) {
+        if (!cellActive_[cell]) return;
         if (overflowRow_ >= 0 && grid_.cellCoords(cell)[D - 1] >= overflowRow_) return;
-        any = true;
-        if (!cellSubmerged_[cell] || liquidCellStart_[cell + 1] == liquidCellStart_[cell]) filled = false;
+        const bool full = cellSubmerged_[cell] && liquidCellStart_[cell + 1] > liquidCellStart_[cell];
+        const Real f = full ? 1 : cellFill_[cell];  // below the free surface the pores are full
+        const bool top = (corner >> (D - 1)) & 1;
+        volume += grid_.cellShare(cell, corner) * (top ? f * f : f * (2 - f));
     });
-    return filled && any;
+    return volume;
 }
 
 template <int D>
@@ -221,6 +239,8 @@ void DoublePointSolver<D>::pointsToGrid() {
     // Nodal porosity n_i = 1 - (sum N m_s / rho_s) / V_i with V_i = integral of N_i over the
     // active cells only: over the whole grid the sand surface would look far too porous.
     const Real mu = config_.liquid.viscosity, rhoL = config_.liquid.density;
+    const bool gridLiquid = config_.liquid.gridLiquidMass;
+    const Index gateRow = grid_.nodeStride(D - 1);
     forAll(grid_.numNodes(), [&](Index i) {
         Real vol = 0, solidSide = 0;
         grid_.forEachCellOfNode(i, [&](Index cell, int corner) {
@@ -239,15 +259,25 @@ void DoublePointSolver<D>::pointsToGrid() {
         //                                 + rho_L n_i^3 |w_i| sum(N V F / sqrt(kappa)),
         // |w_i| from the last step (physics.md, drag).
         const Real ni = porosity_[i];
-        // Below the free surface the pores are full: the nodal liquid mass is the water that fills
-        // them, rho_L n_i V_i, not the sum over liquid points, which bunch where the chamber water
-        // enters the sand (+35 % / -15 %, physics.md's first open problem) and make the liquid's
-        // weight there wrong. The points' mean velocity is kept.
-        if (liquidFilled(i) && massL_[i] > 0) {
-            const Real M = rhoL * ni * vol;
-            const Real scale = M / massL_[i];
-            massL_[i] = M;
-            for (int d = 0; d < D; ++d) momL_[i * D + d] *= scale;
+        // The nodal liquid mass is the water the cells around the node hold, rho_L n_i V_w,i
+        // (waterVolumeAt), not the sum over liquid points. The points bunch where the chamber
+        // water enters the sand (+35 % / -15 %, physics.md's first open problem), which made the
+        // liquid's weight there wrong. And at a free surface a mass that follows the points
+        // within a cell is a Rayleigh-Taylor interface to the one pressure per cell, which cannot
+        // see where in the cell they are: points sinking towards a node make it heavier, the
+        // cell's pressure does not hold the extra weight, and the node pulls them further down.
+        // In 2D that grew from round-off at about 5 /s into a sloshing of the free water's top
+        // cells (v_z alternating by node column, invisible to the cell-centre divergence) and
+        // stopped batch settling at 11.3 s. From the cells' fills the mass does not depend on
+        // where the points are within a cell. The points' mean velocity is kept. The gate plane
+        // keeps the points' mass: the chamber's gap below the lowest points is empty.
+        if (gridLiquid && i >= gateRow && massL_[i] > 0) {
+            const Real M = rhoL * ni * waterVolumeAt(i);
+            if (M > 0) {
+                const Real scale = M / massL_[i];
+                massL_[i] = M;
+                for (int d = 0; d < D; ++d) momL_[i * D + d] *= scale;
+            }
         }
         drag_[i] = (massS_[i] > 0 && massL_[i] > 0)
                        ? ni * ni * mu * dragA_[i] + rhoL * ni * ni * ni * relSpeed_[i] * dragB_[i]
