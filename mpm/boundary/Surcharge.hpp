@@ -13,40 +13,49 @@
 
 namespace qs {
 
-/// m, the top of the highest solid point of one vertical column of cells (its extent from its
-/// volume), or `floor` when the column holds no sand. `cellStart` lists the points by cell.
+/// The sand's surface in one vertical column of cells: the row of its highest cell holding sand
+/// and the top of that cell's highest point (its extent from its volume). Row -1: no sand.
+struct ColumnSurface {
+    Index row = -1;
+    Real top = 0;  ///< m
+};
+
 template <int D>
-Real sandTopOfColumn(const Grid<D>& grid, const SolidPoints<D>& solid, const std::vector<Index>& cellStart,
-                     Index column, int pointsPerCell, Real floor) {
+ColumnSurface sandSurfaceOfColumn(const Grid<D>& grid, const SolidPoints<D>& solid,
+                                  const std::vector<Index>& cellStart, Index column, int pointsPerCell) {
     const Index up = grid.cellStride(D - 1);
     for (Index row = grid.cells(D - 1) - 1; row >= 0; --row) {
         const Index c = column + row * up;
         if (cellStart[c + 1] == cellStart[c]) continue;
-        Real top = floor;
+        ColumnSurface s{row, 0};
         for (Index p = cellStart[c]; p < cellStart[c + 1]; ++p)
-            top = std::max(top, solid.x[p * D + D - 1] +
-                                    0.5 * solid.volume[p] / grid.pointFootprint(&solid.x[p * D], pointsPerCell));
-        return top;
+            s.top = std::max(s.top, solid.x[p * D + D - 1] +
+                                        0.5 * solid.volume[p] / grid.pointFootprint(&solid.x[p * D], pointsPerCell));
+        return s;
     }
-    return floor;
+    return {};
 }
 
 /// Adds the force of the surcharge q (Pa, downwards) on the sand's top, column by column of
 /// cells: F_i = -q N_i(z_col) a_i,col on the vertical component, a_i,col the node's share of the
 /// column's plan area (the traction of the weak form on each column's part of the surface).
+/// z_col is taken within the column's top sand cell: a top point reaching a little above its cell
+/// would put the load on nodes of the row above, which hold no solid there. A column without
+/// sand carries nothing (its share has no sand to act on).
 template <int D>
 void addSurcharge(const Grid<D>& grid, const SolidPoints<D>& solid, const std::vector<Index>& cellStart,
-                  int pointsPerCell, Real filterLevel, Real q, std::vector<Real>& force) {
+                  int pointsPerCell, Real q, std::vector<Real>& force) {
     const Real h = grid.h();
     const Index up = grid.cellStride(D - 1);
     for (Index column = 0; column < up; ++column) {
-        const Real z = sandTopOfColumn(grid, solid, cellStart, column, pointsPerCell, filterLevel);
-        const Index row = std::clamp<Index>(static_cast<Index>(std::floor(z / h)), 0, grid.cells(D - 1) - 1);
-        const Real xi = std::clamp(z / h - row, Real(0), Real(1));
+        const ColumnSurface s = sandSurfaceOfColumn(grid, solid, cellStart, column, pointsPerCell);
+        if (s.row < 0) continue;
+        const Real xi = std::clamp(s.top / h - s.row, Real(0), Real(1));
+        const Index cell = column + s.row * up;
         // a corner's share of the column's plan area: its share of the cell's volume over h / 2
-        grid.forEachNodeOfCell(column + row * up, [&](Index i, int corner) {
+        grid.forEachNodeOfCell(cell, [&](Index i, int corner) {
             const Real N = ((corner >> (D - 1)) & 1) ? xi : 1 - xi;
-            force[i * D + D - 1] -= q * N * 2 * grid.cellShare(column + row * up, corner) / h;
+            force[i * D + D - 1] -= q * N * 2 * grid.cellShare(cell, corner) / h;
         });
     }
 }

@@ -128,7 +128,7 @@ void DoublePointSolver<D>::computeForces() {
     // the natural zero-traction condition holds at a free surface.
     const Real q = surchargeNow();
     if (q != 0)
-        addSurcharge(grid_, solid_, solidCellStart_, config_.points.solidPerCell, config_.filterLevel(), q, forceS_);
+        addSurcharge(grid_, solid_, solidCellStart_, config_.points.solidPerCell, q, forceS_);
 }
 
 // ---------------------------------------------------------------------------------------------
