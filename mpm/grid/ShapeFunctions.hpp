@@ -50,8 +50,36 @@ inline void gimpHat(Real r, Real h, Real lp, Real& N, Real& dN) {
     }
 }
 
+/// The integral of the hat of node 0 from -h to u (m): the hat's running area.
+inline Real hatArea(Real u, Real h) {
+    if (u <= -h) return 0;
+    if (u <= 0) return (u + h) * (u + h) / (2 * h);
+    if (u < h) return h - (h - u) * (h - u) / (2 * h);
+    return h;
+}
+
+/// uGIMP for a particle whose domain [x - lp, x + lp] reaches past the end of the region its
+/// material fills: the domain is cut to [a, b] there, and the weights are the mean of each hat
+/// over what is left, N_i = (1/(b-a)) int_a^b N_i, with grad N_i = (N_i(b) - N_i(a)) / (b - a)
+/// (the mean of the hat's gradient; for the whole domain both are uGIMP's own formulas). So the
+/// weights still sum to 1, their gradients to 0, and sum N_i x_i is the cut domain's centre: a
+/// point beside a smooth wall keeps the velocity of the grid, where uGIMP's weight beyond the wall
+/// was lost and the wall held the point back (partial no-slip).
+inline void cutGimpHat(Real node, Real h, Real a, Real b, Real& N, Real& dN) {
+    const Real length = b - a;
+    N = (hatArea(b - node, h) - hatArea(a - node, h)) / length;
+    Real Nb, Na, unused;
+    linearHat(b - node, h, Nb, unused);
+    linearHat(a - node, h, Na, unused);
+    dN = (Nb - Na) / length;
+}
+
 /// Weights along one axis for a point at x (m from the grid origin) on an axis with `cells` cells.
-inline AxisWeights axisWeights(Real x, Real h, Index cells, ShapeFunctionKind kind, Real lp) {
+/// [lo, hi] (m) is the region the point's material fills along the axis: the grid, or for the sand
+/// the part above the filter. A uGIMP domain is cut at its ends (cutGimpHat); linear hats need no
+/// cut. A point outside its region by more than lp keeps its whole domain (it cannot be cut to
+/// nothing; the sand's transfer drops its weight below the filter, PointsToGrid.cpp).
+inline AxisWeights axisWeights(Real x, Real h, Index cells, ShapeFunctionKind kind, Real lp, Real lo, Real hi) {
     AxisWeights a;
     const Real xi = x / h;
     // clamped before the conversion: a point gone to infinity or NaN is the health check's to
@@ -62,9 +90,12 @@ inline AxisWeights axisWeights(Real x, Real h, Index cells, ShapeFunctionKind ki
     Index s = (kind == ShapeFunctionKind::Gimp && xi - c < 0.5) ? c - 1 : c;
     s = s < 0 ? 0 : (s > cells - 2 ? cells - 2 : s);
     a.start = s;
+    const Real from = x - lp > lo ? x - lp : lo, to = x + lp < hi ? x + lp : hi;
+    const bool cut = kind == ShapeFunctionKind::Gimp && (from > x - lp || to < x + lp) && to - from > 1e-9 * h;
     for (int k = 0; k < kStencil; ++k) {
-        const Real r = x - (s + k) * h;
-        if (kind == ShapeFunctionKind::Gimp) gimpHat(r, h, lp, a.w[k], a.dw[k]);
+        const Real node = (s + k) * h, r = x - node;
+        if (cut) cutGimpHat(node, h, from, to, a.w[k], a.dw[k]);
+        else if (kind == ShapeFunctionKind::Gimp) gimpHat(r, h, lp, a.w[k], a.dw[k]);
         else linearHat(r, h, a.w[k], a.dw[k]);
     }
     return a;

@@ -3,6 +3,7 @@
 // porosity and drag coefficients mapped to the grid (physics.md section 2).
 #include <algorithm>
 #include <cmath>
+#include <type_traits>
 
 #include "solver/DoublePointSolver.hpp"
 #include "grid/ShapeFunctions.hpp"
@@ -49,10 +50,15 @@ void DoublePointSolver<D>::computeShape(Set& set, std::vector<Index>& cellStart,
 
     const auto kind = config_.grid.shapeFunctions;
     const Real h = grid_.h(), lp = set.halfLength;
+    // the region each set fills: the grid, and for the sand only what is above the filter
+    constexpr bool sand = std::is_same_v<Set, SolidPoints<D>>;
+    Real lo[D] = {}, hi[D];
+    for (int d = 0; d < D; ++d) hi[d] = grid_.cells(d) * h;
+    if (sand) lo[D - 1] = sandBottomRow_ * h;
     forAll(n, [&](Index p) {
         Index start = 0;
         for (int d = 0; d < D; ++d) {
-            const AxisWeights a = axisWeights(set.x[p * D + d], h, grid_.cells(d), kind, lp);
+            const AxisWeights a = axisWeights(set.x[p * D + d], h, grid_.cells(d), kind, lp, lo[d], hi[d]);
             start += a.start * grid_.nodeStride(d);
             for (int k = 0; k < kStencil; ++k) {
                 set.shape.w[(p * D + d) * 3 + k] = a.w[k];
@@ -162,11 +168,13 @@ void DoublePointSolver<D>::pointsToGrid() {
 
     // Solid: mass, momentum, grain volume, drag sums and the effective-stress force
     // F_int,S = sum grad(N)^T sigma' V (subtracted).
-    // The sand rests on the filter and never reaches below it: a uGIMP point next to the filter
-    // would leak a sliver of its support (weight ~ (displacement/h)^2) onto the chamber node
-    // below, and there the cell-based interaction force, which does not scale with the solid
-    // present, would act on that sliver of mass and drive it wildly (found as a 10 % slower,
-    // and with one point per cell a stalled, consolidation above the closed base).
+    // The sand rests on the filter and never reaches below it. A uGIMP point next to the filter
+    // has its domain cut there (computeShape), so it leaves nothing on the chamber's nodes; a
+    // sliver there (weight ~ (displacement/h)^2) would meet the cell-based interaction force,
+    // which does not scale with the solid present, and be driven wildly (found as a 10 % slower,
+    // and with one point per cell a stalled, consolidation above the closed base). A point that
+    // has crossed the filter by more than lp, which the filter's held velocity does not let
+    // happen, would still keep its whole domain: the test below drops what it maps there.
     const Index firstSolidNode = sandBottomRow_ * grid_.nodeStride(D - 1);
     const bool axisymmetric = grid_.axisymmetric();
     const bool gimp = config_.grid.shapeFunctions == ShapeFunctionKind::Gimp;
