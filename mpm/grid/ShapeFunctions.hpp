@@ -91,7 +91,7 @@ inline AxisWeights axisWeights(Real x, Real h, Index cells, ShapeFunctionKind ki
     s = s < 0 ? 0 : (s > cells - 2 ? cells - 2 : s);
     a.start = s;
     const Real from = x - lp > lo ? x - lp : lo, to = x + lp < hi ? x + lp : hi;
-    const bool cut = kind == ShapeFunctionKind::Gimp && (from > x - lp || to < x + lp) && to - from > 1e-9 * h;
+    const bool cut = kind == ShapeFunctionKind::Gimp && (from > x - lp || to < x + lp) && to - from > 1e-6 * h;
     for (int k = 0; k < kStencil; ++k) {
         const Real node = (s + k) * h, r = x - node;
         if (cut) cutGimpHat(node, h, from, to, a.w[k], a.dw[k]);

@@ -26,6 +26,12 @@ void DoublePointSolver<D>::gridToPoints() {
     // in axisymmetry off the axis itself, where the hoop terms divide by r (a point reaches the
     // axis only when something pushes it there: v_r vanishes on the axis)
     if (axisymmetric) lowest[0] = 1e-6 * grid_.h();
+    // the sand stays above the filter: a uGIMP point on the filter still takes a share of the
+    // velocity of the node row above it (uGIMP does not interpolate at nodes), and a settling bed
+    // would carry its lowest points up to lp below the filter plane, into the chamber's cells
+    Real sandLowest[D];
+    for (int d = 0; d < D; ++d) sandLowest[d] = lowest[d];
+    sandLowest[D - 1] = sandBottomRow_ * grid_.h();
     forAll(static_cast<Index>(solid_.size()), [&](Index p) {
         Real vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
         bool diffuses = true, held[D] = {};
@@ -53,7 +59,7 @@ void DoublePointSolver<D>::gridToPoints() {
             // wall it does not move it towards or away from the wall: no flux through the wall,
             // whatever the field beside it (the gradient there is one-sided)
             const Real w = diffuses && !held[d] ? -cellDiffusivity_[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
-            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), lowest[d], extent[d]);
+            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), sandLowest[d], extent[d]);
         }
         for (int d = 0; d < D; ++d)
             for (int e = 0; e < D; ++e) solid_.velocityGradient[p * D * D + d * D + e] = L[d][e];  // APIC's C

@@ -172,9 +172,10 @@ void DoublePointSolver<D>::pointsToGrid() {
     // has its domain cut there (computeShape), so it leaves nothing on the chamber's nodes; a
     // sliver there (weight ~ (displacement/h)^2) would meet the cell-based interaction force,
     // which does not scale with the solid present, and be driven wildly (found as a 10 % slower,
-    // and with one point per cell a stalled, consolidation above the closed base). A point that
-    // has crossed the filter by more than lp, which the filter's held velocity does not let
-    // happen, would still keep its whole domain: the test below drops what it maps there.
+    // and with one point per cell a stalled, consolidation above the closed base). The points
+    // are kept above the filter (gridToPoints); should one be found below it by more than lp (a
+    // checkpoint of an older version), its whole domain stays, and the test below drops what it
+    // maps there.
     const Index firstSolidNode = sandBottomRow_ * grid_.nodeStride(D - 1);
     const bool axisymmetric = grid_.axisymmetric();
     const bool gimp = config_.grid.shapeFunctions == ShapeFunctionKind::Gimp;
@@ -195,10 +196,10 @@ void DoublePointSolver<D>::pointsToGrid() {
         const Real hoop = axisymmetric ? s[1] * V / solid_.x[p * D] : 0.0;
         // APIC: the stencil's first node, where the node offsets count from (one division per point)
         const IVec<D> first = grid_.nodeCoords(solid_.shape.start[p]);
-        // The affine term is taken about the mean position of the nodes the point reaches. For
-        // linear shape functions that is the point itself; a uGIMP stencil clipped at a wall or
-        // at the filter (the nodes below it) has sum N (x_i - x_p) != 0, and about x_p the term
-        // would add momentum there
+        // The affine term is taken about the mean position of the nodes the point reaches,
+        // sum N x_i / sum N. For linear shape functions, and for uGIMP inside its region, that is
+        // the point itself; a uGIMP domain cut at a wall or at the filter (ShapeFunctions.hpp) is
+        // centred on the cut domain's centre instead, and about x_p the term would add momentum
         Real centre[D];
         for (int e = 0; e < D; ++e) centre[e] = xp[e];
         if (gimp) {
