@@ -135,7 +135,8 @@ public:
     Index cellOf(const Real* x) const {
         Index k = 0;
         for (int d = 0; d < D; ++d) {
-            const Real s = std::floor(x[d] / h_);
+            // for s >= 0 the conversion is the floor (std::floor is a library call without SSE4.1)
+            const Real s = x[d] / h_;
             const Index c = !(s >= 0) ? 0 : (s >= static_cast<Real>(cells_[d]) ? cells_[d] - 1 : static_cast<Index>(s));
             k += c * cellStride_[d];
         }

@@ -75,7 +75,9 @@ TEST(ShapeFunctions, UgimpCutAtTheRegionsEndsKeepsThePartitionOfUnity) {
             meanHat(node, from, to, N, dN);
             EXPECT_NEAR(a.w[k], N, 1e-8) << c.x << " node " << k;
             EXPECT_NEAR(a.dw[k], dN, 1e-6 / h) << c.x << " node " << k;
-            if (node < c.lo - 1e-12 || node > c.hi + 1e-12) EXPECT_EQ(a.w[k], 0.0) << "beyond the end";
+            if (node < c.lo - 1e-12 || node > c.hi + 1e-12) {
+                EXPECT_EQ(a.w[k], 0.0) << "beyond the end";
+            }
         }
     }
 }
