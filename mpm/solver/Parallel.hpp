@@ -13,6 +13,8 @@
 //
 // Small problems (a 1D column of a few dozen cells) run serially: there the cost of waking
 // threads exceeds the work.
+#include <type_traits>
+
 #include "grid/Grid.hpp"
 
 namespace qs {
@@ -102,48 +104,69 @@ void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellSta
 /// forStencilOffsets calls f(node, N, gradN, offset) with the node's place in the stencil per
 /// axis (offset[d] in 0..2, the node at start's coordinates + offset), for a transfer that needs
 /// the node's position without dividing its index.
-template <int D, class F>
+///
+/// Linear = true is the same walk for linear hats, which reach exactly 2 consecutive nodes of
+/// the 3 per axis (they overlap 2h, and the nodes are h apart): the first of them is the first
+/// stencil node unless that one is zero, and the loops have a fixed trip count of 2 with no zero
+/// tests (those were a third of the instructions of the 3D transfers). The only nodes it adds
+/// to the trimmed walk are those of a point exactly on a node, whose N and gradN are exactly 0
+/// there: their contributions add zeros, and the sums are the same bit for bit.
+template <int D, bool Linear = false, class F>
 inline void forStencilOffsets(const Grid<D>& grid, const Index start, const Real* w, const Real* dw, F&& f) {
+    constexpr int width = Linear ? 2 : 3;
     int lo[D], hi[D];
     for (int d = 0; d < D; ++d) {
+        if constexpr (Linear) {
+            lo[d] = (w[d * 3] == 0 && dw[d * 3] == 0) ? 1 : 0;
+            hi[d] = lo[d] + 1;
+            continue;
+        }
         int first = 0, last = 2;
         while (first <= last && w[d * 3 + first] == 0 && dw[d * 3 + first] == 0) ++first;
         while (last >= first && w[d * 3 + last] == 0 && dw[d * 3 + last] == 0) --last;
         lo[d] = first;
         hi[d] = last;
     }
+    // Linear: the trip counts are fixed (width), so the compiler unrolls the loops
+    auto count = [&](int d) { return Linear ? width : hi[d] - lo[d] + 1; };
     if constexpr (D == 1) {
-        for (int i = lo[0]; i <= hi[0]; ++i) {
+        for (int a = 0; a < count(0); ++a) {
+            const int i = lo[0] + a;
             const Real N = w[i], grad[1] = {dw[i]};
-            if (N == 0 && grad[0] == 0) continue;
+            if (!Linear && N == 0 && grad[0] == 0) continue;
             const int offset[1] = {i};
             f(start + i, N, grad, offset);
         }
     } else if constexpr (D == 2) {
         const Index sy = grid.nodeStride(1);
-        for (int j = lo[1]; j <= hi[1]; ++j) {
+        for (int b = 0; b < count(1); ++b) {
+            const int j = lo[1] + b;
             const Real wy = w[3 + j], dwy = dw[3 + j];
             const Index row = start + j * sy;
-            for (int i = lo[0]; i <= hi[0]; ++i) {
+            for (int a = 0; a < count(0); ++a) {
+                const int i = lo[0] + a;
                 const Real wx = w[i], dwx = dw[i];
                 const Real N = wx * wy, grad[2] = {dwx * wy, dwy * wx};
-                if (N == 0 && grad[0] == 0 && grad[1] == 0) continue;
+                if (!Linear && N == 0 && grad[0] == 0 && grad[1] == 0) continue;
                 const int offset[2] = {i, j};
                 f(row + i, N, grad, offset);
             }
         }
     } else {
         const Index sy = grid.nodeStride(1), sz = grid.nodeStride(2);
-        for (int k = lo[2]; k <= hi[2]; ++k) {
+        for (int c = 0; c < count(2); ++c) {
+            const int k = lo[2] + c;
             const Real wz = w[6 + k], dwz = dw[6 + k];
-            for (int j = lo[1]; j <= hi[1]; ++j) {
+            for (int b = 0; b < count(1); ++b) {
+                const int j = lo[1] + b;
                 const Real wy = w[3 + j], dwy = dw[3 + j];
                 const Index row = start + k * sz + j * sy;
-                for (int i = lo[0]; i <= hi[0]; ++i) {
+                for (int a = 0; a < count(0); ++a) {
+                    const int i = lo[0] + a;
                     const Real wx = w[i], dwx = dw[i];
                     const Real N = (wx * wy) * wz;
                     const Real grad[3] = {(dwx * wy) * wz, (dwy * wx) * wz, (dwz * wx) * wy};
-                    if (N == 0 && grad[0] == 0 && grad[1] == 0 && grad[2] == 0) continue;
+                    if (!Linear && N == 0 && grad[0] == 0 && grad[1] == 0 && grad[2] == 0) continue;
                     const int offset[3] = {i, j, k};
                     f(row + i, N, grad, offset);
                 }
@@ -152,9 +175,17 @@ inline void forStencilOffsets(const Grid<D>& grid, const Index start, const Real
     }
 }
 
-template <int D, class F>
+template <int D, bool Linear = false, class F>
 inline void forStencil(const Grid<D>& grid, const Index start, const Real* w, const Real* dw, F&& f) {
-    forStencilOffsets<D>(grid, start, w, dw, [&](Index i, Real N, const Real* gradN, const int*) { f(i, N, gradN); });
+    forStencilOffsets<D, Linear>(grid, start, w, dw, [&](Index i, Real N, const Real* gradN, const int*) { f(i, N, gradN); });
+}
+
+/// Calls body(std::true_type) when the run's shape functions are linear, body(std::false_type)
+/// otherwise: the transfers take the constant as forStencil's Linear, one branch per loop.
+template <class F>
+inline void withStencilKind(bool linear, F&& body) {
+    if (linear) body(std::true_type{});
+    else body(std::false_type{});
 }
 
 }  // namespace qs

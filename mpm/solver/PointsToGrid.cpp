@@ -179,68 +179,74 @@ void DoublePointSolver<D>::pointsToGrid() {
     const Index firstSolidNode = sandBottomRow_ * grid_.nodeStride(D - 1);
     const bool axisymmetric = grid_.axisymmetric();
     const bool gimp = config_.grid.shapeFunctions == ShapeFunctionKind::Gimp;
-    forEachPointColoured(grid_, solidCellStart_, [&](Index p) {
-        const Real m = solid_.mass[p], V = solid_.volume[p];
-        const auto& mat = materials_[solid_.material[p]];
-        const Real grains = m / mat.grainDensity;
-        const Real n = solid_.porosity[p];
-        const Real kappa = mat.permeability.kappa(n);
-        const Real a = V / kappa;
-        const Real b = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
-        const Real* s = &solid_.stress[p * 6];
-        const Real* v = &solid_.v[p * D];
-        const Real* C = &solid_.velocityGradient[p * D * D];
-        const Real* xp = &solid_.x[p * D];
-        // axisymmetry: the hoop stress pulls the ring towards the axis, sigma_tt N_i / r on the
-        // radial component (Voigt yy is the hoop direction, theta)
-        const Real hoop = axisymmetric ? s[1] * V / solid_.x[p * D] : 0.0;
-        // APIC: the stencil's first node, where the node offsets count from (one division per point)
-        const IVec<D> first = grid_.nodeCoords(solid_.shape.start[p]);
-        // The affine term is taken about the mean position of the nodes the point reaches,
-        // sum N x_i / sum N. For linear shape functions, and for uGIMP inside its region, that is
-        // the point itself; a uGIMP domain cut at a wall or at the filter (ShapeFunctions.hpp) is
-        // centred on the cut domain's centre instead, and about x_p the term would add momentum
-        Real centre[D];
-        for (int e = 0; e < D; ++e) centre[e] = xp[e];
-        if (gimp) {
-            Real sum = 0, moment[D] = {};
-            forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
-                                 &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*, const int* offset) {
-                if (i < firstSolidNode) return;
-                sum += N;
-                for (int e = 0; e < D; ++e) moment[e] += N * grid_.nodePosition(first[e] + offset[e]);
-            });
-            if (sum > 0)
-                for (int e = 0; e < D; ++e) centre[e] = moment[e] / sum;
-        }
-        forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
-                             &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN, const int* offset) {
-            if (i < firstSolidNode) return;
-            massS_[i] += N * m;
-            solidVolume_[i] += N * grains;
-            dragA_[i] += N * a;
-            dragB_[i] += N * b;
-            // APIC: the point's linear velocity field taken to the node, v_p + C_p (x_i - x_p)
-            Real dx[D];
-            for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(first[e] + offset[e]) - centre[e];
-            for (int d = 0; d < D; ++d) {
-                Real vi = v[d];
-                for (int e = 0; e < D; ++e) vi += C[d * D + e] * dx[e];
-                momS_[i * D + d] += N * m * vi;
-                Real f = 0;
-                for (int e = 0; e < D; ++e) f += s[voigt(axis3<D>(d), axis3<D>(e))] * gradN[e];
-                forceS_[i * D + d] -= f * V;
+    withStencilKind(!gimp, [&](auto linearShapes) {
+        constexpr bool linear = decltype(linearShapes)::value;
+        forEachPointColoured(grid_, solidCellStart_, [&](Index p) {
+            const Real m = solid_.mass[p], V = solid_.volume[p];
+            const auto& mat = materials_[solid_.material[p]];
+            const Real grains = m / mat.grainDensity;
+            const Real n = solid_.porosity[p];
+            const Real kappa = mat.permeability.kappa(n);
+            const Real a = V / kappa;
+            const Real b = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
+            const Real* s = &solid_.stress[p * 6];
+            const Real* v = &solid_.v[p * D];
+            const Real* C = &solid_.velocityGradient[p * D * D];
+            const Real* xp = &solid_.x[p * D];
+            // axisymmetry: the hoop stress pulls the ring towards the axis, sigma_tt N_i / r on the
+            // radial component (Voigt yy is the hoop direction, theta)
+            const Real hoop = axisymmetric ? s[1] * V / solid_.x[p * D] : 0.0;
+            // APIC: the stencil's first node, where the node offsets count from (one division per point)
+            const IVec<D> first = grid_.nodeCoords(solid_.shape.start[p]);
+            // The affine term is taken about the mean position of the nodes the point reaches,
+            // sum N x_i / sum N. For linear shape functions, and for uGIMP inside its region, that is
+            // the point itself; a uGIMP domain cut at a wall or at the filter (ShapeFunctions.hpp) is
+            // centred on the cut domain's centre instead, and about x_p the term would add momentum
+            Real centre[D];
+            for (int e = 0; e < D; ++e) centre[e] = xp[e];
+            if (gimp) {
+                Real sum = 0, moment[D] = {};
+                forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                                     &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*, const int* offset) {
+                    if (i < firstSolidNode) return;
+                    sum += N;
+                    for (int e = 0; e < D; ++e) moment[e] += N * grid_.nodePosition(first[e] + offset[e]);
+                });
+                if (sum > 0)
+                    for (int e = 0; e < D; ++e) centre[e] = moment[e] / sum;
             }
-            if (axisymmetric) forceS_[i * D] -= hoop * N;
+            forStencilOffsets<D, linear>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                                 &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN, const int* offset) {
+                if (i < firstSolidNode) return;
+                massS_[i] += N * m;
+                solidVolume_[i] += N * grains;
+                dragA_[i] += N * a;
+                dragB_[i] += N * b;
+                // APIC: the point's linear velocity field taken to the node, v_p + C_p (x_i - x_p)
+                Real dx[D];
+                for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(first[e] + offset[e]) - centre[e];
+                for (int d = 0; d < D; ++d) {
+                    Real vi = v[d];
+                    for (int e = 0; e < D; ++e) vi += C[d * D + e] * dx[e];
+                    momS_[i * D + d] += N * m * vi;
+                    Real f = 0;
+                    for (int e = 0; e < D; ++e) f += s[voigt(axis3<D>(d), axis3<D>(e))] * gradN[e];
+                    forceS_[i * D + d] -= f * V;
+                }
+                if (axisymmetric) forceS_[i * D] -= hoop * N;
+            });
         });
     });
-    forEachPointColoured(grid_, liquidCellStart_, [&](Index p) {
-        const Real m = liquid_.mass[p];
-        const Real* v = &liquid_.v[p * D];
-        forStencil<D>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
-                      &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*) {
-            massL_[i] += N * m;
-            for (int d = 0; d < D; ++d) momL_[i * D + d] += N * m * v[d];
+    withStencilKind(!gimp, [&](auto linearShapes) {
+        constexpr bool linear = decltype(linearShapes)::value;
+        forEachPointColoured(grid_, liquidCellStart_, [&](Index p) {
+            const Real m = liquid_.mass[p];
+            const Real* v = &liquid_.v[p * D];
+            forStencil<D, linear>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
+                          &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*) {
+                massL_[i] += N * m;
+                for (int d = 0; d < D; ++d) momL_[i * D + d] += N * m * v[d];
+            });
         });
     });
 
