@@ -33,88 +33,96 @@ void DoublePointSolver<D>::gridToPoints() {
     Real sandLowest[D];
     for (int d = 0; d < D; ++d) sandLowest[d] = lowest[d];
     sandLowest[D - 1] = sandBottomRow_ * grid_.h();
-    withStencilKind(!gimp, [&](auto linearShapes) {
+    // The solid's update, with the front diffusion's sums only on steps that have any: with no
+    // diffusion node no point diffuses (its weights sum to 1, so some node with N > 0 is not one)
+    auto solidPoint = [&](Index p, auto withDiffusion, auto linearShapes) {
+        constexpr bool diffusion = decltype(withDiffusion)::value;
         constexpr bool linear = decltype(linearShapes)::value;
-        forAll(static_cast<Index>(solid_.size()), [&](Index p) {
-            Real vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
-            bool diffuses = true, held[D] = {};
-            forStencil<D, linear>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
-                          &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
-                for (int d = 0; d < D; ++d) {
-                    const Real v = velS_[i * D + d];
-                    vNew[d] += N * v;
-                    for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
-                    gradPhi[d] -= gradN[d] * sandPorosity_[i];
-                }
-                gridPorosity += N * sandPorosity_[i];
+        Real vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
+        bool diffuses = diffusion, held[D] = {};
+        forStencil<D, linear>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                      &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+            for (int d = 0; d < D; ++d) {
+                const Real v = velS_[i * D + d];
+                vNew[d] += N * v;
+                for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
+                if constexpr (diffusion) gradPhi[d] -= gradN[d] * sandPorosity_[i];
+            }
+            gridPorosity += N * sandPorosity_[i];
+            if constexpr (diffusion) {
                 if (N > 0 && !diffusionNode_[i]) diffuses = false;
                 for (int d = 0; d < D - 1; ++d) held[d] = held[d] || (N > 0 && masks_.solidFixed[i * D + d]);
-            });
-            const Index cell = solid_.shape.cell[p];
-            const Real radius = solid_.x[p * D];  // where the shape functions were taken
-            for (int d = 0; d < D; ++d) {
-                // APIC: the point takes the grid's velocity and its gradient (next to it, C = L), so
-                // that its next transfer hands back the grid's linear field instead of smearing it (PIC)
-                // or keeping velocities of its own the grid cannot see (FLIP: in sand without effective
-                // stress those grew from round-off at 3 /s into an odd-even lateral mode in 2D and 3D)
-                solid_.v[p * D + d] = vNew[d];
-                // the front diffusion moves the point; it is not part of its velocity. Next to a
-                // wall it does not move it towards or away from the wall: no flux through the wall,
-                // whatever the field beside it (the gradient there is one-sided)
-                const Real w = diffuses && !held[d] ? -cellDiffusivity_[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
-                solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), sandLowest[d], extent[d]);
             }
-            for (int d = 0; d < D; ++d)
-                for (int e = 0; e < D; ++e) solid_.velocityGradient[p * D * D + d * D + e] = L[d][e];  // APIC's C
-            Real dEps[6] = {};
-            for (int d = 0; d < D; ++d)
-                for (int e = d; e < D; ++e)
-                    dEps[voigt(axis3<D>(d), axis3<D>(e))] = 0.5 * dt * (L[d][e] + L[e][d]);
-            // axisymmetry: the hoop strain v_r / r at the point's own radius (Voigt yy is theta)
-            if (axisymmetric) dEps[1] = dt * vNew[0] / radius;
-            const Real dVol = dEps[0] + dEps[1] + dEps[2];
-            const auto& mat = materials_[solid_.material[p]];
-            Real* s = &solid_.stress[p * 6];
-            Real& n = solid_.porosity[p];
-            const bool fluidised = cellFluidised_[cell];
-            const bool resettling = !fluidised && solid_.state[p] == kFluidisedState;
-            if (resettling) {
-                // a skeleton again, restarting from zero effective stress (no viscous stress left)
-                solid_.state[p] = kSolidState;
-                for (int k = 0; k < 6; ++k) s[k] = 0;
-            }
-            // the sand's porosity where the point is, from the grid (at the sand's top, the cell's)
-            if (cellSandSurface_[cell]) gridPorosity = cellSandPorosity_[cell];
-            gridPorosity = std::clamp(gridPorosity, Real(1e-3), Real(0.99));
-            // looser than the loosest packing the grains form no skeleton (no effective stress); a
-            // skeleton that carries stress loses it only beyond the switch's hysteresis band, so that
-            // the grid's sampling noise about n_max does not unload a consolidated sediment
-            const Real looseLimit = mat.maxPorosity + (isStressFree(s) ? 0 : stateRule_.hysteresis);
-            const bool noSkeleton = !fluidised && gridPorosity > looseLimit;
-            if (fluidised || resettling || diffuses || noSkeleton) {
-                // fluidised material, material resettling from it, sand without a skeleton and
-                // stress-free sand that the front diffusion moves take their porosity from the grid,
-                // where the points' spacing shows, and a volume to match: their own mass balance
-                // drifts once the skeleton carries no stress (physics/LiquidStateRule.hpp)
-                n = gridPorosity;
-                solid_.volume[p] = solid_.mass[p] / (mat.grainDensity * (1 - n));
-            }
-            if (fluidised) {
-                // no effective stress, only the suspension's viscous stress
-                solid_.state[p] = kFluidisedState;
-                mat.suspension.stress(n, dEps, dt, s);
-                solid_.stressReturn[p] = -1;
-                return;
-            }
-            n = 1 - (1 - n) / (1 + dVol);  // solid mass balance, grains incompressible
-            solid_.volume[p] *= 1 + dVol;
-            const StressPoint point{dEps, s, solid_.internal.data() + p * solid_.internalCount, dt};
-            solid_.stressReturn[p] = static_cast<int>(mat.model->update(point));
-            // a resettling bed settles onto its sediment without stress until it reaches n_max,
-            // and its skeleton takes stress from there on
-            if (noSkeleton)
-                for (int k = 0; k < 6; ++k) s[k] = 0;
         });
+        const Index cell = solid_.shape.cell[p];
+        const Real radius = solid_.x[p * D];  // where the shape functions were taken
+        for (int d = 0; d < D; ++d) {
+            // APIC: the point takes the grid's velocity and its gradient (next to it, C = L), so
+            // that its next transfer hands back the grid's linear field instead of smearing it (PIC)
+            // or keeping velocities of its own the grid cannot see (FLIP: in sand without effective
+            // stress those grew from round-off at 3 /s into an odd-even lateral mode in 2D and 3D)
+            solid_.v[p * D + d] = vNew[d];
+            // the front diffusion moves the point; it is not part of its velocity. Next to a
+            // wall it does not move it towards or away from the wall: no flux through the wall,
+            // whatever the field beside it (the gradient there is one-sided)
+            const Real w = diffuses && !held[d] ? -cellDiffusivity_[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
+            solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), sandLowest[d], extent[d]);
+        }
+        for (int d = 0; d < D; ++d)
+            for (int e = 0; e < D; ++e) solid_.velocityGradient[p * D * D + d * D + e] = L[d][e];  // APIC's C
+        Real dEps[6] = {};
+        for (int d = 0; d < D; ++d)
+            for (int e = d; e < D; ++e)
+                dEps[voigt(axis3<D>(d), axis3<D>(e))] = 0.5 * dt * (L[d][e] + L[e][d]);
+        // axisymmetry: the hoop strain v_r / r at the point's own radius (Voigt yy is theta)
+        if (axisymmetric) dEps[1] = dt * vNew[0] / radius;
+        const Real dVol = dEps[0] + dEps[1] + dEps[2];
+        const auto& mat = materials_[solid_.material[p]];
+        Real* s = &solid_.stress[p * 6];
+        Real& n = solid_.porosity[p];
+        const bool fluidised = cellFluidised_[cell];
+        const bool resettling = !fluidised && solid_.state[p] == kFluidisedState;
+        if (resettling) {
+            // a skeleton again, restarting from zero effective stress (no viscous stress left)
+            solid_.state[p] = kSolidState;
+            for (int k = 0; k < 6; ++k) s[k] = 0;
+        }
+        // the sand's porosity where the point is, from the grid (at the sand's top, the cell's)
+        if (cellSandSurface_[cell]) gridPorosity = cellSandPorosity_[cell];
+        gridPorosity = std::clamp(gridPorosity, Real(1e-3), Real(0.99));
+        // looser than the loosest packing the grains form no skeleton (no effective stress); a
+        // skeleton that carries stress loses it only beyond the switch's hysteresis band, so that
+        // the grid's sampling noise about n_max does not unload a consolidated sediment
+        const Real looseLimit = mat.maxPorosity + (isStressFree(s) ? 0 : stateRule_.hysteresis);
+        const bool noSkeleton = !fluidised && gridPorosity > looseLimit;
+        if (fluidised || resettling || diffuses || noSkeleton) {
+            // fluidised material, material resettling from it, sand without a skeleton and
+            // stress-free sand that the front diffusion moves take their porosity from the grid,
+            // where the points' spacing shows, and a volume to match: their own mass balance
+            // drifts once the skeleton carries no stress (physics/LiquidStateRule.hpp)
+            n = gridPorosity;
+            solid_.volume[p] = solid_.mass[p] / (mat.grainDensity * (1 - n));
+        }
+        if (fluidised) {
+            // no effective stress, only the suspension's viscous stress
+            solid_.state[p] = kFluidisedState;
+            mat.suspension.stress(n, dEps, dt, s);
+            solid_.stressReturn[p] = -1;
+            return;
+        }
+        n = 1 - (1 - n) / (1 + dVol);  // solid mass balance, grains incompressible
+        solid_.volume[p] *= 1 + dVol;
+        const StressPoint point{dEps, s, solid_.internal.data() + p * solid_.internalCount, dt};
+        solid_.stressReturn[p] = static_cast<int>(mat.model->update(point));
+        // a resettling bed settles onto its sediment without stress until it reaches n_max,
+        // and its skeleton takes stress from there on
+        if (noSkeleton)
+            for (int k = 0; k < 6; ++k) s[k] = 0;
+    };
+    const Index solidCount = static_cast<Index>(solid_.size());
+    withStencilKind(!gimp, [&](auto linearShapes) {
+        if (anyDiffusion_) forAll(solidCount, [&](Index p) { solidPoint(p, std::true_type{}, linearShapes); });
+        else forAll(solidCount, [&](Index p) { solidPoint(p, std::false_type{}, linearShapes); });
     });
 
     // The liquid's update, with the front diffusion's sums only on steps that have any (most
