@@ -189,9 +189,12 @@ void DoublePointSolver<D>::pointsToGrid() {
             const Real kappa = mat.permeability.kappa(n);
             const Real a = V / kappa;
             const Real b = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
-            const Real* s = &solid_.stress[p * 6];
-            const Real* v = &solid_.v[p * D];
-            const Real* C = &solid_.velocityGradient[p * D * D];
+            // the point's fields in locals: the node arrays' stores cannot alias them, so they stay
+            // in registers across the stencil instead of being reloaded at every node
+            Real s[6], v[D], C[D * D];
+            for (int k = 0; k < 6; ++k) s[k] = solid_.stress[p * 6 + k];
+            for (int d = 0; d < D; ++d) v[d] = solid_.v[p * D + d];
+            for (int k = 0; k < D * D; ++k) C[k] = solid_.velocityGradient[p * D * D + k];
             const Real* xp = &solid_.x[p * D];
             // axisymmetry: the hoop stress pulls the ring towards the axis, sigma_tt N_i / r on the
             // radial component (Voigt yy is the hoop direction, theta)
