@@ -8,7 +8,8 @@
 #                                      with 1 and 2 threads: updates/s, the 2-thread speed-up,
 #                                      bytes per point, and the fraction of the memory bandwidth
 #                                      (a STREAM triad compiled and run here) that streaming every
-#                                      resident byte once per step would take
+#                                      resident byte once per step would take; three interleaved
+#                                      rounds, best rate and spread (LATERAL_ROUNDS=N for more)
 #   bash tools/benchmark.sh --consolidation3d   the 3D consolidation benchmark case, 1 and 2 threads
 # Speed is measured here, never by timed tests.
 set -euo pipefail
