@@ -61,6 +61,10 @@ TRIAD
     # Rounds of 1 and 2 threads, interleaved, and the best rate of each: on a shared machine a
     # single run scatters by up to 50 %, and what others take from it only ever slows a run down
     rounds="${LATERAL_ROUNDS:-3}"
+    if ! [[ "$rounds" =~ ^[1-9][0-9]*$ ]]; then
+        echo "tools/benchmark.sh: LATERAL_ROUNDS = '$rounds': expected a whole number of rounds >= 1" >&2
+        exit 2
+    fi
     for round in $(seq "$rounds"); do
         for threads in 1 2; do
             OMP_NUM_THREADS=$threads "$build_dir/tools/benchmarks/quicksand_benchmarks" \

@@ -97,6 +97,14 @@ inline AxisWeights axisWeights(Real x, Real h, Index cells, ShapeFunctionKind ki
     if (kind == ShapeFunctionKind::Linear) {
         const Real invH = 1.0 / h;
         for (int k = 0; k < kStencil; ++k) linearHat(x - (s + k) * h, h, invH, a.w[k], a.dw[k]);
+        // The hat reaches only the two nodes of the point's cell (the stencil's second and third
+        // in the grid's top cell, where s is clamped). In exact arithmetic the third is zero
+        // anyway, but with the node positions rounded a point within an ulp below a node could
+        // get a third weight of ~1e-16 with a full slope 1/h (the slopes would then no longer sum
+        // to zero): it is zeroed, so the linear stencil walk (solver/Parallel.hpp) holds exactly
+        const Index off = c - s;
+        const int other = off <= 0 ? 2 : 0;
+        a.w[other] = a.dw[other] = 0;
         return a;
     }
     const Real from = x - lp > lo ? x - lp : lo, to = x + lp < hi ? x + lp : hi;

@@ -110,7 +110,9 @@ void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellSta
 /// stencil node unless that one is zero, and the loops have a fixed trip count of 2 with no zero
 /// tests (those were a third of the instructions of the 3D transfers). The only nodes it adds
 /// to the trimmed walk are those of a point exactly on a node, whose N and gradN are exactly 0
-/// there: their contributions add zeros, and the sums are the same bit for bit.
+/// there: their contributions add zeros, and the sums are the same bit for bit. (For a point at
+/// a non-finite position, which the health check reports, the two walks may differ: the zero
+/// weights then multiply the point's values, which may be non-finite too.)
 template <int D, bool Linear = false, class F>
 inline void forStencilOffsets(const Grid<D>& grid, const Index start, const Real* w, const Real* dw, F&& f) {
     constexpr int width = Linear ? 2 : 3;

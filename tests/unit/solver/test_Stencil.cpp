@@ -1,9 +1,12 @@
 // The stencil walks of solver/Parallel.hpp: the fixed 2-node-per-axis walk for linear hats
 // (forStencilOffsets<D, true>) must make the same calls as the general, trimmed walk, in the same
 // order, adding only nodes whose N and grad N are exactly zero, so that every transfer's sums are
-// the same bit for bit. Points inside cells, on nodes (one, two or all axes), at the grid's ends.
+// the same bit for bit. Points inside cells, on nodes (one, two or all axes), within an ulp of
+// every node (where the rounded node positions could give a linear hat a third weight), at the
+// grid's ends and just outside it.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <random>
 #include <vector>
 
@@ -15,7 +18,7 @@ using namespace qs;
 namespace {
 
 constexpr double h = 0.01;
-constexpr Index cells = 4;
+constexpr Index cells = 9;  // node positions k h that round both ways
 
 struct Call {
     Index node;
@@ -53,32 +56,45 @@ bool isZero(const Call& c, int D) {
     return zero;
 }
 
+/// A transfer's sum over a walk: N and grad N weighting values that differ from node to node.
+template <int D>
+double transferSum(const std::vector<Call>& calls) {
+    double sum = 0;
+    for (const Call& c : calls) {
+        sum += c.N * (c.node + 1.5);
+        for (int d = 0; d < D; ++d) sum += c.grad[d] * (c.node + 0.25 * (d + 1));
+    }
+    return sum;
+}
+
 template <int D>
 void checkPoint(const Grid<D>& grid, const double* x) {
     const auto general = walk<D, false>(grid, x), linear = walk<D, true>(grid, x);
     ASSERT_EQ(linear.size(), std::size_t(1) << D) << "2 nodes per axis";
     std::size_t g = 0;
-    double sumGeneral = 0, sumLinear = 0;  // a transfer's sum, N and grad N weighting the node index
     for (const Call& c : linear) {
         ASSERT_GE(c.node, 0);
         ASSERT_LT(c.node, grid.numNodes());
-        double term = c.N * (c.node + 1.5);
-        for (int d = 0; d < D; ++d) term += c.grad[d] * (c.node + 0.25 * d);
-        sumLinear += term;
         if (g < general.size() && general[g].node == c.node) {
             EXPECT_EQ(c.N, general[g].N);
             for (int d = 0; d < D; ++d) {
                 EXPECT_EQ(c.grad[d], general[g].grad[d]);
                 EXPECT_EQ(c.offset[d], general[g].offset[d]);
             }
-            sumGeneral += term;
             ++g;
         } else {
             EXPECT_TRUE(isZero(c, D)) << "an added node must carry nothing: node " << c.node << ", N = " << c.N;
         }
     }
     EXPECT_EQ(g, general.size()) << "every node of the general walk, in its order";
-    EXPECT_EQ(sumLinear, sumGeneral) << "the sums, bit for bit";
+    EXPECT_EQ(transferSum<D>(linear), transferSum<D>(general)) << "the sums, bit for bit";
+    // a linear hat has at most two live nodes per axis, and they are neighbours
+    for (int d = 0; d < D; ++d) {
+        const AxisWeights a = axisWeights(x[d], h, cells, ShapeFunctionKind::Linear, 0.0, 0.0, cells * h);
+        const bool live[3] = {a.w[0] != 0 || a.dw[0] != 0, a.w[1] != 0 || a.dw[1] != 0, a.w[2] != 0 || a.dw[2] != 0};
+        EXPECT_FALSE(live[0] && live[2]) << "axis " << d << " at x = " << x[d] << ": a third weight "
+                                         << a.w[0] << ", " << a.w[1] << ", " << a.w[2];
+    }
 }
 
 template <int D>
@@ -97,6 +113,20 @@ void checkAll() {
         SCOPED_TRACE(testing::Message() << "trial " << trial);
         checkPoint(grid, x);
         if (testing::Test::HasFatalFailure()) return;
+    }
+    // within an ulp of every node, on every axis at once, and just outside the grid
+    for (Index k = 0; k <= cells; ++k)
+        for (const double toward : {-1.0, 1.0}) {
+            double x[D];
+            for (int d = 0; d < D; ++d) x[d] = std::nextafter(k * h, toward);
+            SCOPED_TRACE(testing::Message() << "next to node " << k << " towards " << toward);
+            checkPoint(grid, x);
+            if (testing::Test::HasFatalFailure()) return;
+        }
+    for (const double outside : {-0.3 * h, cells * h + 0.3 * h}) {
+        double x[D];
+        for (int d = 0; d < D; ++d) x[d] = outside;
+        checkPoint(grid, x);
     }
     double corner[D];
     for (int d = 0; d < D; ++d) corner[d] = cells * h;  // the grid's far corner
