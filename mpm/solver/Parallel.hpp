@@ -4,15 +4,22 @@
 // forAll(n, f): f(i) for i in [0, n), OpenMP static schedule. Use it where every i writes only
 // its own outputs (nodes, cells, points reading the grid).
 //
-// forEachPointColoured(grid, cellStart, f): f(p) for every point, scattering to the grid without
-// races or locks: cells are grouped in blocks of 3 per axis, and blocks of one colour (parity per
-// axis) never share a node: a point in cell c touches nodes c-1 .. c+2 at most (uGIMP, kStencil),
-// so block [3b, 3b+2] touches nodes 3b-1 .. 3b+4 and the next block of its colour starts at node
-// 3b+5. Inside a block, points run in their sorted order, so every node sums its contributions in
-// the same order whatever the number of threads: results are identical for 1 and 2 threads.
+// forEachPointColoured(grid, cellStart, rowsPerSlab, f): f(p) for every point, scattering to the grid
+// without races or locks: the grid is cut into slabs of whole rows of cells along the vertical
+// axis, and slabs of one colour (even or odd) never share a node. A point in cell row r touches
+// node rows r .. r+1 with linear hats and r-1 .. r+2 at most with uGIMP (kStencil), so slabs of
+// t = rowsPerSlab rows (slabRows: 1 linear, 3 uGIMP) suffice: slab [tb, tb+t-1] touches node rows tb-1 .. tb+t+1
+// at most, and the next slab of its colour starts at row tb+2t. Every node then takes one slab's
+// contributions per colour, each slab's points run in their sorted order, and the colours in
+// turn, so the sums are the same whatever the number of threads: results are identical for 1
+// and 2 threads. The points are sorted by cell with the vertical axis slowest, so a slab's points
+// are one contiguous range of memory, walked in order: the hardware prefetches it. (Blocks of
+// 3 cells per axis in 2^D colours, the earlier scheme, jumped between runs of 3 cells' points,
+// and the solid scatter missed the cache at every run: 15 % of a 3D step, docs/performance.md.)
 //
 // Small problems (a 1D column of a few dozen cells) run serially: there the cost of waking
 // threads exceeds the work.
+#include <algorithm>
 #include <type_traits>
 
 #include "grid/Grid.hpp"
@@ -20,8 +27,8 @@
 namespace qs {
 
 constexpr Index kMinParallelItems = 4096;  ///< below this many items a loop runs serially
-constexpr Index kMinParallelBlocks = 16;   ///< below this many blocks per colour, serially
-constexpr Index kBlockCells = 3;           ///< cells per block and axis in coloured scatters
+constexpr Index kMinParallelSlabs = 4;     ///< below this many slabs per colour, serially
+constexpr Index kBlockCells = 3;           ///< rows of cells per slab of a uGIMP scatter
 
 template <class F>
 inline void forAll(Index n, F&& f) {
@@ -49,47 +56,29 @@ inline bool anyOf(Index n, F&& pred) {
     return any;
 }
 
+/// The rows of cells a slab of forEachPointColoured holds for points of the given shape functions.
+inline Index slabRows(bool linearShapes) { return linearShapes ? 1 : kBlockCells; }
+
 template <int D, class F>
-void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellStart, F&& f) {
-    IVec<D> blocks;
-    Index numBlocks = 1;
-    for (int d = 0; d < D; ++d) {
-        blocks[d] = (grid.cells(d) + kBlockCells - 1) / kBlockCells;
-        numBlocks *= blocks[d];
-    }
-    // the points of block b if it has the colour
-    auto block = [&](int colour, Index b) {
-        IVec<D> bc;
-        Index rest = b;
-        for (int d = 0; d < D; ++d) {
-            bc[d] = rest % blocks[d];
-            rest /= blocks[d];
-            if ((bc[d] & 1) != ((colour >> d) & 1)) return;
-        }
-        // the block's cells, kBlockCells per axis, in lexicographic (sorted) order
-        constexpr int cellsPerBlock = D == 1 ? 3 : (D == 2 ? 9 : 27);
-        for (int k = 0; k < cellsPerBlock; ++k) {
-            IVec<D> c;
-            bool inside = true;
-            int left = k;
-            for (int d = 0; d < D; ++d) {
-                c[d] = kBlockCells * bc[d] + left % kBlockCells;
-                left /= kBlockCells;
-                if (c[d] >= grid.cells(d)) inside = false;
-            }
-            if (!inside) continue;
-            const Index cell = grid.cellIndex(c);
-            for (Index p = cellStart[cell]; p < cellStart[cell + 1]; ++p) f(p);
-        }
+void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellStart, Index rowsPerSlab, F&& f) {
+    const Index rows = grid.cells(D - 1), rowCells = grid.cellStride(D - 1);
+    const Index slabs = (rows + rowsPerSlab - 1) / rowsPerSlab;
+    auto slab = [&](Index k) {
+        const Index begin = cellStart[k * rowsPerSlab * rowCells];
+        const Index end = cellStart[std::min(rows, (k + 1) * rowsPerSlab) * rowCells];
+        for (Index p = begin; p < end; ++p) f(p);
     };
-    if (numBlocks < (kMinParallelBlocks << D)) {  // serially, outside OpenMP (see forAll)
-        for (int colour = 0; colour < (1 << D); ++colour)
-            for (Index b = 0; b < numBlocks; ++b) block(colour, b);
+    const Index points = cellStart.back();
+    if (points < kMinParallelItems || slabs < 2 * kMinParallelSlabs) {  // serially, outside OpenMP (see forAll)
+        for (int colour = 0; colour < 2; ++colour)
+            for (Index k = colour; k < slabs; k += 2) slab(k);
         return;
     }
-    for (int colour = 0; colour < (1 << D); ++colour) {
-#pragma omp parallel for schedule(dynamic, 4)
-        for (Index b = 0; b < numBlocks; ++b) block(colour, b);
+    // dynamic: the points are not spread evenly over the rows (the sand lies below the water)
+    const Index perColour = slabs / 2, chunk = std::max<Index>(1, perColour / 64);
+    for (int colour = 0; colour < 2; ++colour) {
+#pragma omp parallel for schedule(dynamic, chunk)
+        for (Index j = 0; j < (slabs - colour + 1) / 2; ++j) slab(colour + 2 * j);
     }
 }
 

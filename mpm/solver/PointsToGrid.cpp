@@ -181,7 +181,7 @@ void DoublePointSolver<D>::pointsToGrid() {
     const bool gimp = config_.grid.shapeFunctions == ShapeFunctionKind::Gimp;
     withStencilKind(!gimp, [&](auto linearShapes) {
         constexpr bool linear = decltype(linearShapes)::value;
-        forEachPointColoured(grid_, solidCellStart_, [&](Index p) {
+        forEachPointColoured(grid_, solidCellStart_, slabRows(linear), [&](Index p) {
             const Real m = solid_.mass[p], V = solid_.volume[p];
             const auto& mat = materials_[solid_.material[p]];
             const Real grains = m / mat.grainDensity;
@@ -242,7 +242,7 @@ void DoublePointSolver<D>::pointsToGrid() {
     });
     withStencilKind(!gimp, [&](auto linearShapes) {
         constexpr bool linear = decltype(linearShapes)::value;
-        forEachPointColoured(grid_, liquidCellStart_, [&](Index p) {
+        forEachPointColoured(grid_, liquidCellStart_, slabRows(linear), [&](Index p) {
             const Real m = liquid_.mass[p];
             const Real* v = &liquid_.v[p * D];
             forStencil<D, linear>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],

@@ -23,7 +23,7 @@ Snapshot runWithThreads(int threads, ShapeFunctionKind shape) {
     CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/critical_gradient");
     c.grid.shapeFunctions = shape;
     // fine enough that every loop runs in parallel: more nodes, cells and points of each set
-    // than kMinParallelItems, more blocks per colour than kMinParallelBlocks
+    // than kMinParallelItems, more slabs per colour than kMinParallelSlabs
     const double h = 0.186 / 4200;
     c.grid.cellSize = h;
     c.column.chamberHeight = 12 * h;
@@ -91,9 +91,8 @@ Snapshot lateralRunWithThreads(int threads, double h, int across, int steps) {
     omp_set_num_threads(threads);
     auto reservoir = makeReservoirModel(c);
     DoublePointSolver<D> solver(c, *reservoir);
-    Index blocks = 1;
-    for (int d = 0; d < D; ++d) blocks *= (solver.grid().cells(d) + 2) / 3;
-    EXPECT_GE(blocks, kMinParallelBlocks << D);
+    // the uGIMP scatter's slabs, the thicker ones, two colours
+    EXPECT_GE(solver.grid().cells(D - 1) / slabRows(false), 2 * kMinParallelSlabs);
     EXPECT_GT(solver.grid().numCells(), kMinParallelItems);
     EXPECT_GT(static_cast<Index>(solver.solid().size()), kMinParallelItems);
     for (int k = 0; k < steps; ++k) solver.step();
