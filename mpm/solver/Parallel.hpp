@@ -4,18 +4,26 @@
 // forAll(n, f): f(i) for i in [0, n), OpenMP static schedule. Use it where every i writes only
 // its own outputs (nodes, cells, points reading the grid).
 //
-// forEachPointColoured(grid, cellStart, rowsPerSlab, f): f(p) for every point, scattering to the grid
-// without races or locks: the grid is cut into slabs of whole rows of cells along the vertical
-// axis, and slabs of one colour (even or odd) never share a node. A point in cell row r touches
-// node rows r .. r+1 with linear hats and r-1 .. r+2 at most with uGIMP (kStencil), so slabs of
-// t = rowsPerSlab rows (slabRows: 1 linear, 3 uGIMP) suffice: slab [tb, tb+t-1] touches node rows tb-1 .. tb+t+1
-// at most, and the next slab of its colour starts at row tb+2t. Every node then takes one slab's
-// contributions per colour, each slab's points run in their sorted order, and the colours in
-// turn, so the sums are the same whatever the number of threads: results are identical for 1
-// and 2 threads. The points are sorted by cell with the vertical axis slowest, so a slab's points
-// are one contiguous range of memory, walked in order: the hardware prefetches it. (Blocks of
-// 3 cells per axis in 2^D colours, the earlier scheme, jumped between runs of 3 cells' points,
-// and the solid scatter missed the cache at every run: 15 % of a 3D step, docs/performance.md.)
+// forEachPointColoured(grid, cellStart, rowsPerSlab, f): f(p) for every point, scattering to the
+// grid without races or locks: the grid is cut into slabs of whole rows of cells along the
+// vertical axis, and slabs of one colour (even or odd) never share a node. A slab of t rows
+// starting at row tb touches node rows tb-1 .. tb+t+1 at most, and the next slab of its colour
+// starts at row tb+2t, so t must exceed the reach beyond the slab's own rows:
+// - uGIMP: a point in cell row r touches node rows r-1 .. r+2 (kStencil), so t = 3;
+// - linear: a point in row r touches node rows r and r+1, but the linear walk writes 2 nodes per
+//   axis, starting one node up when the first stencil node's weight is zero. Within an ulp of
+//   the node row above its cell a point can have a zero weight at its cell's bottom node (the
+//   cell is floor(fl(x/h)), the weight 1 - fl(x - fl(r h))/h), and the walk then adds zero to node
+//   row r+2; a non-atomic += 0 can still lose another thread's sum. So t = 2, one row to spare
+//   (test_ColouredScatter puts points within an ulp of every node row; 1-row slabs fail it).
+// Every node then takes one slab's contributions per colour, each slab's points run in their
+// sorted order, and the colours in turn, so the sums are the same whatever the number of
+// threads: results are identical for 1 and 2 threads. The points are sorted by cell with the
+// vertical axis slowest, so a slab's points are one contiguous range of memory, walked in order:
+// the hardware prefetches it. (Blocks of 3 cells per axis in 2^D colours, the earlier scheme,
+// jumped between runs of 3 cells' points, and the solid scatter missed the cache at every run:
+// docs/performance.md.) The price: a grid of fewer than 2 kMinParallelSlabs slabs (a shallow
+// domain, under 4 rows linear or 6 uGIMP) scatters on one thread.
 //
 // Small problems (a 1D column of a few dozen cells) run serially: there the cost of waking
 // threads exceeds the work.
@@ -27,7 +35,7 @@
 namespace qs {
 
 constexpr Index kMinParallelItems = 4096;  ///< below this many items a loop runs serially
-constexpr Index kMinParallelSlabs = 4;     ///< below this many slabs per colour, serially
+constexpr Index kMinParallelSlabs = 2;     ///< below this many slabs per colour, serially
 constexpr Index kBlockCells = 3;           ///< rows of cells per slab of a uGIMP scatter
 
 template <class F>
@@ -57,7 +65,7 @@ inline bool anyOf(Index n, F&& pred) {
 }
 
 /// The rows of cells a slab of forEachPointColoured holds for points of the given shape functions.
-inline Index slabRows(bool linearShapes) { return linearShapes ? 1 : kBlockCells; }
+inline Index slabRows(bool linearShapes) { return linearShapes ? 2 : kBlockCells; }
 
 template <int D, class F>
 void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellStart, Index rowsPerSlab, F&& f) {

@@ -1,12 +1,14 @@
 // The coloured scatter of solver/Parallel.hpp: slabs of whole cell rows, two colours. Two slabs
 // of one colour run at the same time, so they must never write the same node: checked here for
 // the nodes the solver's own stencil walks write (the linear walk writes its 2^D nodes, zero
-// weights included), with points inside cells, on nodes and cell faces, and at the grid's ends.
+// weights included), with points inside cells, on nodes and cell faces, within an ulp of them
+// (where a linear walk starts a node up), and at the grid's ends, for several cell sizes.
 // And every point is visited once, the colours in turn, a slab's points in their sorted order.
 #include <gtest/gtest.h>
 #include <omp.h>
 
 #include <algorithm>
+#include <cmath>
 #include <map>
 #include <random>
 #include <vector>
@@ -19,6 +21,8 @@ using namespace qs;
 namespace {
 
 constexpr double h = 0.01;
+/// cell sizes of the shipped and verification cases, and others whose multiples round both ways
+constexpr double kCellSizes[] = {0.01, 0.0062, 0.0093, 0.00465, 0.0124, 0.02, 0.003, 0.007};
 
 template <int D>
 struct Points {
@@ -27,17 +31,25 @@ struct Points {
     std::vector<double> w, dw;  // 3 per axis and point
 };
 
-/// n random points in the grid, a third of their coordinates on a node, sorted by cell, with
-/// the shape functions of `kind` (uGIMP with lp = h/4, its domain cut at the grid's ends).
+/// n random points in the grid, a third of their coordinates on a node and a third within an ulp
+/// of one, sorted by cell, with the shape functions of `kind` (uGIMP with lp = h/4, its domain
+/// cut at the grid's ends).
 template <int D>
 Points<D> makePoints(const Grid<D>& grid, Index n, ShapeFunctionKind kind, unsigned seed) {
+    const double h = grid.h();
     std::mt19937 rng(seed);
     std::vector<std::vector<double>> xs(n, std::vector<double>(D));
     for (auto& x : xs)
         for (int d = 0; d < D; ++d) {
-            std::uniform_real_distribution<double> inside(0.0, grid.cells(d) * h);
+            const double top = grid.cells(d) * h;
+            std::uniform_real_distribution<double> inside(0.0, top);
             std::uniform_int_distribution<Index> node(0, grid.cells(d));
-            x[d] = rng() % 3 == 0 ? node(rng) * h : inside(rng);
+            const double onNode = node(rng) * h;
+            switch (rng() % 3) {
+                case 0: x[d] = onNode; break;
+                case 1: x[d] = std::clamp(std::nextafter(onNode, rng() % 2 ? HUGE_VAL : -HUGE_VAL), 0.0, top); break;
+                default: x[d] = inside(rng);
+            }
         }
     auto cellOf = [&](const std::vector<double>& x) { return grid.cellOf(x.data()); };
     std::stable_sort(xs.begin(), xs.end(), [&](const auto& a, const auto& b) { return cellOf(a) < cellOf(b); });
@@ -70,7 +82,8 @@ Index slabOf(const Grid<D>& grid, Index cell, Index rowsPerSlab) {
 }
 
 template <int D, bool Linear>
-void checkNoSharedNodes(const IVec<D>& cells, ShapeFunctionKind kind) {
+void checkNoSharedNodes(const IVec<D>& cells, ShapeFunctionKind kind, double h) {
+    SCOPED_TRACE(testing::Message() << "h = " << h << (Linear ? ", linear" : ", uGIMP"));
     const Grid<D> grid(cells, h, 1.0);
     const Points<D> pts = makePoints(grid, 4000, kind, 11);
     const Index rowsPerSlab = slabRows(Linear);
@@ -109,18 +122,24 @@ void checkNoSharedNodes(const IVec<D>& cells, ShapeFunctionKind kind) {
 }  // namespace
 
 TEST(ColouredScatter, SlabsOfOneColourShareNoNodeIn1D) {
-    checkNoSharedNodes<1, true>({40}, ShapeFunctionKind::Linear);
-    checkNoSharedNodes<1, false>({40}, ShapeFunctionKind::Gimp);
+    for (const double h : kCellSizes) {
+        checkNoSharedNodes<1, true>({125}, ShapeFunctionKind::Linear, h);
+        checkNoSharedNodes<1, false>({125}, ShapeFunctionKind::Gimp, h);
+    }
 }
 
 TEST(ColouredScatter, SlabsOfOneColourShareNoNodeIn2D) {
-    checkNoSharedNodes<2, true>({5, 20}, ShapeFunctionKind::Linear);
-    checkNoSharedNodes<2, false>({5, 20}, ShapeFunctionKind::Gimp);
+    for (const double h : kCellSizes) {
+        checkNoSharedNodes<2, true>({3, 125}, ShapeFunctionKind::Linear, h);
+        checkNoSharedNodes<2, false>({3, 125}, ShapeFunctionKind::Gimp, h);
+    }
 }
 
 TEST(ColouredScatter, SlabsOfOneColourShareNoNodeIn3D) {
-    checkNoSharedNodes<3, true>({3, 4, 14}, ShapeFunctionKind::Linear);
-    checkNoSharedNodes<3, false>({3, 4, 14}, ShapeFunctionKind::Gimp);
+    for (const double h : kCellSizes) {
+        checkNoSharedNodes<3, true>({2, 3, 125}, ShapeFunctionKind::Linear, h);
+        checkNoSharedNodes<3, false>({2, 3, 125}, ShapeFunctionKind::Gimp, h);
+    }
 }
 
 /// In parallel (more points than kMinParallelItems, enough slabs per colour), with 2 threads:
