@@ -98,22 +98,19 @@ inline AxisWeights axisWeights(Real x, Real h, Index cells, ShapeFunctionKind ki
         const Real invH = 1.0 / h;
         const Index off = c - s;
         if (off == 0 || off == 1) {
-            // inside the grid: the two nodes of the point's cell, the third is zero (below). The
-            // third hat's test, whether it reaches, is the branch a predictor gets wrong (the point
-            // is in the stencil's lower or upper cell), and its division is a third of the work
+            // inside the grid: only the two nodes of the point's cell, the third is zeroed below.
+            // The third hat's test, whether it reaches, is the branch a predictor gets wrong (the
+            // point is in the stencil's lower or upper cell), and its division is a third of the work
             linearHat(x - (s + off) * h, h, invH, a.w[off], a.dw[off]);
             linearHat(x - (s + off + 1) * h, h, invH, a.w[off + 1], a.dw[off + 1]);
-            const int other = off == 0 ? 2 : 0;
-            a.w[other] = a.dw[other] = 0;
-            return a;
+        } else {  // outside the grid: off is -1 or 2
+            for (int k = 0; k < kStencil; ++k) linearHat(x - (s + k) * h, h, invH, a.w[k], a.dw[k]);
         }
-        for (int k = 0; k < kStencil; ++k) linearHat(x - (s + k) * h, h, invH, a.w[k], a.dw[k]);
         // The hat reaches only the two nodes of the point's cell (the stencil's second and third
         // in the grid's top cell, where s is clamped). In exact arithmetic the third is zero
         // anyway, but with the node positions rounded a point within an ulp below a node could
         // get a third weight of ~1e-16 with a full slope 1/h (the slopes would then no longer sum
         // to zero): it is zeroed, so the linear stencil walk (solver/Parallel.hpp) holds exactly.
-        // (Outside the grid, off is -1 or 2.)
         const int other = off <= 0 ? 2 : 0;
         a.w[other] = a.dw[other] = 0;
         return a;

@@ -36,7 +36,8 @@ namespace qs {
 
 constexpr Index kMinParallelItems = 4096;  ///< below this many items a loop runs serially
 constexpr Index kMinParallelSlabs = 2;     ///< below this many slabs per colour, serially
-constexpr Index kBlockCells = 3;           ///< rows of cells per slab of a uGIMP scatter
+constexpr Index kLinearSlabRows = 2;       ///< rows of cells per slab of a linear scatter (below)
+constexpr Index kGimpSlabRows = 3;         ///< rows of cells per slab of a uGIMP scatter
 
 template <class F>
 inline void forAll(Index n, F&& f) {
@@ -65,7 +66,7 @@ inline bool anyOf(Index n, F&& pred) {
 }
 
 /// The rows of cells a slab of forEachPointColoured holds for points of the given shape functions.
-inline Index slabRows(bool linearShapes) { return linearShapes ? 2 : kBlockCells; }
+inline Index slabRows(bool linearShapes) { return linearShapes ? kLinearSlabRows : kGimpSlabRows; }
 
 template <int D, class F>
 void forEachPointColoured(const Grid<D>& grid, const std::vector<Index>& cellStart, Index rowsPerSlab, F&& f) {

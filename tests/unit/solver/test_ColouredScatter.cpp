@@ -20,7 +20,6 @@ using namespace qs;
 
 namespace {
 
-constexpr double h = 0.01;
 /// cell sizes of the shipped and verification cases, and others whose multiples round both ways
 constexpr double kCellSizes[] = {0.01, 0.0062, 0.0093, 0.00465, 0.0124, 0.02, 0.003, 0.007};
 
@@ -145,7 +144,7 @@ TEST(ColouredScatter, SlabsOfOneColourShareNoNodeIn3D) {
 /// In parallel (more points than kMinParallelItems, enough slabs per colour), with 2 threads:
 /// every point is visited exactly once.
 TEST(ColouredScatter, TwoThreadsVisitEveryPointOnce) {
-    const Grid<3> grid({4, 4, 40}, h, 1.0);
+    const Grid<3> grid({4, 4, 40}, kCellSizes[0], 1.0);
     ASSERT_GE(grid.cells(2) / slabRows(false), 2 * kMinParallelSlabs);
     for (const bool linear : {true, false}) {
         const Points<3> pts = makePoints(grid, 3 * kMinParallelItems, linear ? ShapeFunctionKind::Linear : ShapeFunctionKind::Gimp, 5);
