@@ -35,7 +35,7 @@ public:
     /// used as the out-of-plane extent of 1D and 2D plane grids; axisymmetric: a 2D (r, z) grid.
     /// pointsPerCell: in axisymmetry, the solid points across a cell (the radial quadrature rule).
     Grid(const IVec<D>& cells, Real h, Real crossSection, bool axisymmetric = false, int pointsPerCell = 2)
-        : cells_(cells), h_(h), axisymmetric_(axisymmetric) {
+        : cells_(cells), h_(h), invH_(1 / h), axisymmetric_(axisymmetric) {
         radialOffset_ = axisymmetric ? h / 6 * (1 - 1.0 / (pointsPerCell * pointsPerCell)) : 0.0;
         QS_CHECK(!axisymmetric || D == 2, "an axisymmetric grid is two-dimensional (r, z)");
         numCells_ = 1;
@@ -129,17 +129,20 @@ public:
         for (int d = 0; d < D; ++d) { n[d] = k % nodes_[d]; k /= nodes_[d]; }
         return n;
     }
-    /// The cell holding x (clamped to the grid). Clamped before the conversion to an integer, so
-    /// that a point gone to infinity or NaN (which the health check then reports) is in cell 0 or
-    /// the last cell rather than undefined behaviour.
+    /// 1/m, 1 / h: positions in cells are x * invH() wherever a cell is looked up (cellOf,
+    /// LinearStencil), so that all agree on a point within an ulp of a node.
+    Real invH() const { return invH_; }
+    /// The cell along axis d at u = x invH() (x in m), clamped to the grid. Clamped before the
+    /// conversion to an integer, so that a point gone to infinity or NaN (which the health check
+    /// then reports) is in cell 0 or the last cell rather than undefined behaviour.
+    Index cellAlong(int d, Real u) const {
+        // for u >= 0 the conversion is the floor (std::floor is a library call without SSE4.1)
+        return !(u >= 0) ? 0 : (u >= static_cast<Real>(cells_[d]) ? cells_[d] - 1 : static_cast<Index>(u));
+    }
+    /// The cell holding x (clamped to the grid).
     Index cellOf(const Real* x) const {
         Index k = 0;
-        for (int d = 0; d < D; ++d) {
-            // for s >= 0 the conversion is the floor (std::floor is a library call without SSE4.1)
-            const Real s = x[d] / h_;
-            const Index c = !(s >= 0) ? 0 : (s >= static_cast<Real>(cells_[d]) ? cells_[d] - 1 : static_cast<Index>(s));
-            k += c * cellStride_[d];
-        }
+        for (int d = 0; d < D; ++d) k += cellAlong(d, x[d] * invH_) * cellStride_[d];
         return k;
     }
     /// Calls f(cell, corner) for each existing cell around a node; `corner` is the node's corner
@@ -200,7 +203,7 @@ public:
 private:
     IVec<D> cells_{}, nodes_{}, cellStride_{}, nodeStride_{};
     Index numCells_ = 0, numNodes_ = 0;
-    Real h_ = 0, outOfPlane_ = 1, crossSection_ = 0, radialOffset_ = 0, planeCellVolume_ = 0;
+    Real h_ = 0, invH_ = 0, outOfPlane_ = 1, crossSection_ = 0, radialOffset_ = 0, planeCellVolume_ = 0;
     bool axisymmetric_ = false;
 };
 

@@ -110,7 +110,8 @@ inline AxisWeights axisWeights(Real x, Real h, Index cells, ShapeFunctionKind ki
         // in the grid's top cell, where s is clamped). In exact arithmetic the third is zero
         // anyway, but with the node positions rounded a point within an ulp below a node could
         // get a third weight of ~1e-16 with a full slope 1/h (the slopes would then no longer sum
-        // to zero): it is zeroed, so the linear stencil walk (solver/Parallel.hpp) holds exactly.
+        // to zero): it is zeroed. (The solver takes linear weights from grid/LinearStencil.hpp;
+        // these per-axis ones are the reference its tests compare with.)
         const int other = off <= 0 ? 2 : 0;
         a.w[other] = a.dw[other] = 0;
         return a;

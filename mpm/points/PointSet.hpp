@@ -13,21 +13,26 @@
 
 namespace qs {
 
-/// Per-point shape-function cache: stencil origin node and per-axis weights (see
-/// grid/ShapeFunctions.hpp). Recomputed every step from the positions.
+/// Per-point shape-function cache, recomputed every step from the positions: the cell holding
+/// the point and, for uGIMP only, the stencil's origin node and per-axis weights (see
+/// grid/ShapeFunctions.hpp). Linear weights are cheaper to take from the position where they are
+/// used than to store and load (grid/LinearStencil.hpp), so a linear run keeps only the cells.
 template <int D>
 struct ShapeCache {
     std::vector<Index> cell;    ///< cell holding the point
-    std::vector<Index> start;   ///< flat index of the stencil's first node
-    std::vector<Real> w, dw;    ///< [point][axis][3]
+    std::vector<Index> start;   ///< flat index of the stencil's first node (uGIMP)
+    std::vector<Real> w, dw;    ///< [point][axis][3] (uGIMP)
+    bool weights = true;        ///< whether start, w and dw are kept
     void resize(std::size_t n) {
         cell.resize(n);
+        if (!weights) return;
         start.resize(n);
         w.resize(n * D * 3);
         dw.resize(n * D * 3);
     }
     void reserve(std::size_t n) {
         cell.reserve(n);
+        if (!weights) return;
         start.reserve(n);
         w.reserve(n * D * 3);
         dw.reserve(n * D * 3);

@@ -132,6 +132,8 @@ void DoublePointSolver<D>::allocate() {
     scratch_.reals.reserve(liquidCapacity * 6);
     scratch_.ints.reserve(liquidCapacity);
     scratch_.order.reserve(liquidCapacity);
+    const bool gimp = config_.grid.shapeFunctions == ShapeFunctionKind::Gimp;
+    liquid_.shape.weights = solid_.shape.weights = gimp;  // linear weights come from the positions
     liquid_.shape.reserve(liquidCapacity);
     liquid_.weight.reserve(liquidCapacity);
     solid_.shape.reserve(solid_.size());

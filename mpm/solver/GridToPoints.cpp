@@ -10,6 +10,7 @@
 #include "materials/ConstitutiveModel.hpp"
 #include "materials/StressTensor.hpp"
 #include "solver/Parallel.hpp"
+#include "solver/PointStencil.hpp"
 
 namespace qs {
 
@@ -40,8 +41,7 @@ void DoublePointSolver<D>::gridToPoints() {
         constexpr bool linear = decltype(linearShapes)::value;
         Real vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
         bool diffuses = diffusion, held[D] = {};
-        forStencil<D, linear>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
-                      &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+        forEachNodeOfPoint<linear>(grid_, solid_, p, [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
                 const Real v = velS_[i * D + d];
                 vNew[d] += N * v;
@@ -132,8 +132,7 @@ void DoublePointSolver<D>::gridToPoints() {
         constexpr bool linear = decltype(linearShapes)::value;
         Real dv[D] = {}, vNew[D] = {}, div = 0, gradPhi[D] = {}, sand = 0, mixture = 0, gradP[D] = {};
         bool diffuses = diffusion, held[D] = {};
-        forStencil<D, linear>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
-                      &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN) {
+        forEachNodeOfPoint<linear>(grid_, liquid_, p, [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
                 const Real v = velL_[i * D + d];
                 dv[d] += N * (v - velLOld_[i * D + d]);

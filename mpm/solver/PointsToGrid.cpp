@@ -9,6 +9,7 @@
 #include "grid/ShapeFunctions.hpp"
 #include "materials/StressTensor.hpp"
 #include "solver/Parallel.hpp"
+#include "solver/PointStencil.hpp"
 
 namespace qs {
 
@@ -48,6 +49,8 @@ void DoublePointSolver<D>::computeShape(Set& set, std::vector<Index>& cellStart,
         forAll(n, [&](Index p) { cell[p] = grid_.cellOf(&set.x[p * D]); });
     }
 
+    // linear shape functions are taken from the positions where they are used (PointStencil.hpp)
+    if (!set.shape.weights) return;
     const auto kind = config_.grid.shapeFunctions;
     const Real h = grid_.h(), lp = set.halfLength;
     // the region each set fills: the grid, and for the sand only what is above the filter
@@ -179,76 +182,146 @@ void DoublePointSolver<D>::pointsToGrid() {
     const Index firstSolidNode = sandBottomRow_ * grid_.nodeStride(D - 1);
     const bool axisymmetric = grid_.axisymmetric();
     const bool gimp = config_.grid.shapeFunctions == ShapeFunctionKind::Gimp;
-    withStencilKind(!gimp, [&](auto linearShapes) {
-        constexpr bool linear = decltype(linearShapes)::value;
-        forEachPointColoured(grid_, solidCellStart_, slabRows(linear), [&](Index p) {
-            const Real m = solid_.mass[p], V = solid_.volume[p];
-            const auto& mat = materials_[solid_.material[p]];
-            const Real grains = m / mat.grainDensity;
-            const Real n = solid_.porosity[p];
-            const Real kappa = mat.permeability.kappa(n);
-            const Real a = V / kappa;
-            const Real b = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
-            // the point's fields in locals: the node arrays' stores cannot alias them, so they stay
-            // in registers across the stencil instead of being reloaded at every node
-            Real s[6], v[D], C[D * D];
-            for (int k = 0; k < 6; ++k) s[k] = solid_.stress[p * 6 + k];
+    // What a solid point hands every node it reaches, scaled by N (or grad N): its mass, its
+    // grains' volume, the drag sums V / kappa and V F / sqrt(kappa), and its effective stress
+    // times its volume (the force is -V sigma' grad N). Axisymmetry: the hoop stress pulls the
+    // ring towards the axis, sigma_tt V N_i / r on the radial component (Voigt yy is theta).
+    struct SolidShares {
+        Real m, grains, dragA, dragB, hoop;
+        Real stressV[D][D];  ///< -V sigma'_de, the force per unit of grad N
+    };
+    auto sharesOf = [&](Index p) {
+        SolidShares t;
+        const Real V = solid_.volume[p], n = solid_.porosity[p];
+        const auto& mat = materials_[solid_.material[p]];
+        const Real kappa = mat.permeability.kappa(n);
+        t.m = solid_.mass[p];
+        t.grains = t.m / mat.grainDensity;
+        t.dragA = V / kappa;
+        t.dragB = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
+        const Real* s = &solid_.stress[p * 6];
+        for (int d = 0; d < D; ++d)
+            for (int e = 0; e < D; ++e) t.stressV[d][e] = -V * s[voigt(axis3<D>(d), axis3<D>(e))];
+        t.hoop = axisymmetric ? s[1] * V / solid_.x[p * D] : 0.0;
+        return t;
+    };
+    if (!gimp) {
+        // Linear shape functions: the point's cell's 2^D nodes (grid/LinearStencil.hpp). APIC's
+        // velocity at node k, v_p + C_p (x_k - x_p) with x_k - x_p = (k_e - xi_e) h, is the
+        // velocity at the cell's lowest node plus C_p h for each axis along which k is the upper node.
+        const Real h = grid_.h();
+        forEachPointColoured(grid_, solidCellStart_, slabRows(true), [&](Index p) {
+            // the node arrays as locals: the compiler keeps them in registers across the nodes
+            Real* const mass = massS_.data();
+            Real* const grains = solidVolume_.data();
+            Real* const dragA = dragA_.data();
+            Real* const dragB = dragB_.data();
+            Real* const mom = momS_.data();
+            Real* const force = forceS_.data();
+            const LinearStencil<D> st = linearStencil(grid_, &solid_.x[p * D]);
+            const SolidShares t = sharesOf(p);
+            const Real* C = &solid_.velocityGradient[p * D * D];
+            // the momentum at the cell's lowest node, m (v_p - C_p xi h), and its step per axis, m C_p h
+            Real base[D], step[D][D];
+            for (int d = 0; d < D; ++d) {
+                base[d] = solid_.v[p * D + d];
+                for (int e = 0; e < D; ++e) {
+                    base[d] -= C[d * D + e] * st.xi[e] * h;
+                    step[d][e] = t.m * C[d * D + e] * h;
+                }
+                base[d] *= t.m;
+            }
+            // the sand never reaches below the filter (gridToPoints keeps it above); a point
+            // found there all the same (a checkpoint of an older version) leaves nothing below it
+            Real N[LinearStencil<D>::kNodes];
+            for (int k = 0; k < LinearStencil<D>::kNodes; ++k)
+                N[k] = st.node[0] >= firstSolidNode || st.node[k] >= firstSolidNode ? st.N[k] : 0.0;
+            // three passes over the nodes, each with few values live (one pass spilled registers)
+#pragma GCC unroll 8
+            for (int k = 0; k < LinearStencil<D>::kNodes; ++k) {
+                const Index i = st.node[k];
+                mass[i] += N[k] * t.m;
+                grains[i] += N[k] * t.grains;
+                dragA[i] += N[k] * t.dragA;
+                dragB[i] += N[k] * t.dragB;
+            }
+#pragma GCC unroll 8
+            for (int k = 0; k < LinearStencil<D>::kNodes; ++k) {
+                const Index i = st.node[k];
+                for (int d = 0; d < D; ++d) {
+                    Real mv = base[d];
+                    for (int e = 0; e < D; ++e)
+                        if (LinearStencil<D>::bit(k, e)) mv += step[d][e];
+                    mom[i * D + d] += N[k] * mv;
+                }
+            }
+            const Real filterFactor = st.node[0] >= firstSolidNode ? 1.0 : 0.0;
+#pragma GCC unroll 8
+            for (int k = 0; k < LinearStencil<D>::kNodes; ++k) {
+                const Index i = st.node[k];
+                const Real keep = st.node[k] >= firstSolidNode ? 1.0 : filterFactor;
+                for (int d = 0; d < D; ++d) {
+                    Real f = 0;
+                    for (int e = 0; e < D; ++e) f += t.stressV[d][e] * st.grad[k][e];
+                    force[i * D + d] += keep * f;
+                }
+                if (axisymmetric) force[i * D] -= t.hoop * N[k];
+            }
+        });
+    } else {
+        // uGIMP: the cached per-axis weights (computeShape), up to 3 nodes per axis
+        forEachPointColoured(grid_, solidCellStart_, slabRows(false), [&](Index p) {
+            const SolidShares t = sharesOf(p);
+            Real v[D], C[D * D];
             for (int d = 0; d < D; ++d) v[d] = solid_.v[p * D + d];
             for (int k = 0; k < D * D; ++k) C[k] = solid_.velocityGradient[p * D * D + k];
             const Real* xp = &solid_.x[p * D];
-            // axisymmetry: the hoop stress pulls the ring towards the axis, sigma_tt N_i / r on the
-            // radial component (Voigt yy is the hoop direction, theta)
-            const Real hoop = axisymmetric ? s[1] * V / solid_.x[p * D] : 0.0;
             // APIC: the stencil's first node, where the node offsets count from (one division per point)
             const IVec<D> first = grid_.nodeCoords(solid_.shape.start[p]);
             // The affine term is taken about the mean position of the nodes the point reaches,
-            // sum N x_i / sum N. For linear shape functions, and for uGIMP inside its region, that is
-            // the point itself; a uGIMP domain cut at a wall or at the filter (ShapeFunctions.hpp) is
-            // centred on the cut domain's centre instead, and about x_p the term would add momentum
-            Real centre[D];
-            for (int e = 0; e < D; ++e) centre[e] = xp[e];
-            if (gimp) {
-                Real sum = 0, moment[D] = {};
-                forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
-                                     &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*, const int* offset) {
-                    if (i < firstSolidNode) return;
-                    sum += N;
-                    for (int e = 0; e < D; ++e) moment[e] += N * grid_.nodePosition(first[e] + offset[e]);
-                });
-                if (sum > 0)
-                    for (int e = 0; e < D; ++e) centre[e] = moment[e] / sum;
-            }
-            forStencilOffsets<D, linear>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+            // sum N x_i / sum N: inside its region that is the point itself; a uGIMP domain cut at
+            // a wall or at the filter (ShapeFunctions.hpp) is centred on the cut domain's centre
+            // instead, and about x_p the term would add momentum
+            Real centre[D], sum = 0, moment[D] = {};
+            forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
+                                 &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*, const int* offset) {
+                if (i < firstSolidNode) return;
+                sum += N;
+                for (int e = 0; e < D; ++e) moment[e] += N * grid_.nodePosition(first[e] + offset[e]);
+            });
+            for (int e = 0; e < D; ++e) centre[e] = sum > 0 ? moment[e] / sum : xp[e];
+            forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
                                  &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN, const int* offset) {
                 if (i < firstSolidNode) return;
-                massS_[i] += N * m;
-                solidVolume_[i] += N * grains;
-                dragA_[i] += N * a;
-                dragB_[i] += N * b;
-                // APIC: the point's linear velocity field taken to the node, v_p + C_p (x_i - x_p)
+                massS_[i] += N * t.m;
+                solidVolume_[i] += N * t.grains;
+                dragA_[i] += N * t.dragA;
+                dragB_[i] += N * t.dragB;
                 Real dx[D];
                 for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(first[e] + offset[e]) - centre[e];
                 for (int d = 0; d < D; ++d) {
                     Real vi = v[d];
                     for (int e = 0; e < D; ++e) vi += C[d * D + e] * dx[e];
-                    momS_[i * D + d] += N * m * vi;
+                    momS_[i * D + d] += N * t.m * vi;
                     Real f = 0;
-                    for (int e = 0; e < D; ++e) f += s[voigt(axis3<D>(d), axis3<D>(e))] * gradN[e];
-                    forceS_[i * D + d] -= f * V;
+                    for (int e = 0; e < D; ++e) f += t.stressV[d][e] * gradN[e];
+                    forceS_[i * D + d] += f;
                 }
-                if (axisymmetric) forceS_[i * D] -= hoop * N;
+                if (axisymmetric) forceS_[i * D] -= t.hoop * N;
             });
         });
-    });
+    }
     withStencilKind(!gimp, [&](auto linearShapes) {
         constexpr bool linear = decltype(linearShapes)::value;
         forEachPointColoured(grid_, liquidCellStart_, slabRows(linear), [&](Index p) {
+            Real* const mass = massL_.data();
+            Real* const mom = momL_.data();
             const Real m = liquid_.mass[p];
-            const Real* v = &liquid_.v[p * D];
-            forStencil<D, linear>(grid_, liquid_.shape.start[p], &liquid_.shape.w[p * D * 3],
-                          &liquid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real*) {
-                massL_[i] += N * m;
-                for (int d = 0; d < D; ++d) momL_[i * D + d] += N * m * v[d];
+            Real mv[D];
+            for (int d = 0; d < D; ++d) mv[d] = m * liquid_.v[p * D + d];
+            forEachNodeOfPoint<linear>(grid_, liquid_, p, [&](Index i, Real N, const Real*) {
+                mass[i] += N * m;
+                for (int d = 0; d < D; ++d) mom[i * D + d] += N * mv[d];
             });
         });
     });

@@ -29,14 +29,16 @@ std::int64_t cellsIn(double length, double h) { return saturatedCount(std::round
 
 // Bytes per point or per grid entity, from the fields the solver keeps (double = 8, Index = 8,
 // int = 4, char = 1); D is the grid dimension.
-double solidBytes(int D) {
+/// The shape-function cache: the cell, and for uGIMP the stencil's start and w and dw (3 per axis);
+/// linear weights are taken from the positions where they are used (solver/PointStencil.hpp).
+double shapeBytes(int D, bool gimp) { return 8 + (gimp ? 8 + 8.0 * 6 * D : 0.0); }
+double solidBytes(int D, bool gimp) {
     const double state = 8.0 * (2 * D + 3 + 6 + D * D) + 4 + 4;  // x, v, mass, volume, porosity, stress, C; state, material
-    const double shape = 8 + 8 + 8.0 * 6 * D;            // cell, start, w and dw (3 per axis)
-    return state + shape;
+    return state + shapeBytes(D, gimp);
 }
-double liquidBytes(int D) {
+double liquidBytes(int D, bool gimp) {
     const double state = 8.0 * (2 * D + 3) + 4;          // x, v, mass, volume, pressure; state
-    const double shape = 8 + 8 + 8.0 * 6 * D;
+    const double shape = shapeBytes(D, gimp);
     const double perStep = 8 + 8 + 1;                    // weight V*, strain increment, drop flag
     const double scratch = 8.0 * 6 + 4.0 * 6 + 8;        // reorder scratch (reals, ints, order)
     return state + shape + perStep + scratch;
@@ -106,7 +108,8 @@ RunSize estimateRunSize(const CaseConfig& config) {
     // The solver's arrays, and one more copy of the point state (a checkpoint being written, or
     // the rollback copy of an implicit coupling window).
     const double stateCopy = r.solidPoints * 8.0 * (2 * D + 11 + D * D) + r.liquidCapacity * 8.0 * (2 * D + 4);
-    r.peakBytes = r.solidPoints * solidBytes(D) + r.liquidCapacity * liquidBytes(D) +
+    const bool gimp = config.grid.shapeFunctions == ShapeFunctionKind::Gimp;
+    r.peakBytes = r.solidPoints * solidBytes(D, gimp) + r.liquidCapacity * liquidBytes(D, gimp) +
                   r.nodes * nodeBytes(D) + r.cells * cellBytes(D) + stateCopy;
 
     const double updates = double(r.steps) * (double(r.solidPoints) + double(r.liquidPoints));  // both may saturate

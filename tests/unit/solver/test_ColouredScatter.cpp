@@ -1,8 +1,9 @@
 // The coloured scatter of solver/Parallel.hpp: slabs of whole cell rows, two colours. Two slabs
 // of one colour run at the same time, so they must never write the same node: checked here for
-// the nodes the solver's own stencil walks write (the linear walk writes its 2^D nodes, zero
-// weights included), with points inside cells, on nodes and cell faces, within an ulp of them
-// (where a linear walk starts a node up), and at the grid's ends, for several cell sizes.
+// the nodes the solver's own stencil walks write (forEachNodeOfPoint: the linear stencil's 2^D
+// nodes, zero weights included, and uGIMP's trimmed walk), with points inside cells, on nodes and
+// cell faces, within an ulp of them (where the cell of x / h and of x (1/h) can differ), and at
+// the grid's ends, for several cell sizes.
 // And every point is visited once, the colours in turn, a slab's points in their sorted order.
 #include <gtest/gtest.h>
 #include <omp.h>
@@ -15,6 +16,7 @@
 
 #include "grid/ShapeFunctions.hpp"
 #include "solver/Parallel.hpp"
+#include "solver/PointStencil.hpp"
 
 using namespace qs;
 
@@ -23,11 +25,15 @@ namespace {
 /// cell sizes of the shipped and verification cases, and others whose multiples round both ways
 constexpr double kCellSizes[] = {0.01, 0.0062, 0.0093, 0.00465, 0.0124, 0.02, 0.003, 0.007};
 
+/// A point set as the solver's (x and its shape cache), sorted by cell.
 template <int D>
 struct Points {
     std::vector<double> x;  // D per point, sorted by cell
-    std::vector<Index> cell, start, cellStart;
-    std::vector<double> w, dw;  // 3 per axis and point
+    struct {
+        std::vector<Index> cell, start;
+        std::vector<double> w, dw;  // 3 per axis and point
+    } shape;
+    std::vector<Index> cellStart;
 };
 
 /// n random points in the grid, a third of their coordinates on a node and a third within an ulp
@@ -57,18 +63,18 @@ Points<D> makePoints(const Grid<D>& grid, Index n, ShapeFunctionKind kind, unsig
     for (const auto& x : xs) {
         const Index c = cellOf(x);
         p.x.insert(p.x.end(), x.begin(), x.end());
-        p.cell.push_back(c);
+        p.shape.cell.push_back(c);
         ++p.cellStart[c + 1];
         Index start = 0;
         for (int d = 0; d < D; ++d) {
             const AxisWeights a = axisWeights(x[d], h, grid.cells(d), kind, 0.25 * h, 0.0, grid.cells(d) * h);
             start += a.start * grid.nodeStride(d);
             for (int k = 0; k < kStencil; ++k) {
-                p.w.push_back(a.w[k]);
-                p.dw.push_back(a.dw[k]);
+                p.shape.w.push_back(a.w[k]);
+                p.shape.dw.push_back(a.dw[k]);
             }
         }
-        p.start.push_back(start);
+        p.shape.start.push_back(start);
     }
     for (Index c = 0; c < grid.numCells(); ++c) p.cellStart[c + 1] += p.cellStart[c];
     return p;
@@ -93,10 +99,9 @@ void checkNoSharedNodes(const IVec<D>& cells, ShapeFunctionKind kind, double h) 
     omp_set_num_threads(1);  // the visiting order, as a sequence
     forEachPointColoured(grid, pts.cellStart, rowsPerSlab, [&](Index p) {
         order.push_back(p);
-        const Index slab = slabOf(grid, pts.cell[p], rowsPerSlab);
+        const Index slab = slabOf(grid, pts.shape.cell[p], rowsPerSlab);
         const int colour = slab % 2;
-        forStencilOffsets<D, Linear>(grid, pts.start[p], &pts.w[p * D * 3], &pts.dw[p * D * 3],
-                                     [&](Index i, double, const double*, const int*) {
+        forEachNodeOfPoint<Linear>(grid, pts, p, [&](Index i, double, const double*) {
             ASSERT_GE(i, 0);
             ASSERT_LT(i, grid.numNodes());
             const auto key = std::make_pair(i, colour);
@@ -107,10 +112,10 @@ void checkNoSharedNodes(const IVec<D>& cells, ShapeFunctionKind kind, double h) 
         });
     });
     omp_set_num_threads(before);
-    ASSERT_EQ(order.size(), pts.cell.size()) << "every point once";
+    ASSERT_EQ(order.size(), pts.shape.cell.size()) << "every point once";
     for (std::size_t k = 1; k < order.size(); ++k) {
-        const Index a = slabOf(grid, pts.cell[order[k - 1]], rowsPerSlab);
-        const Index b = slabOf(grid, pts.cell[order[k]], rowsPerSlab);
+        const Index a = slabOf(grid, pts.shape.cell[order[k - 1]], rowsPerSlab);
+        const Index b = slabOf(grid, pts.shape.cell[order[k]], rowsPerSlab);
         const bool sameSlab = a == b;
         EXPECT_TRUE(sameSlab ? order[k] == order[k - 1] + 1 : (a % 2 < b % 2 || (a % 2 == b % 2 && a < b)))
             << "visit " << k << ": point " << order[k] << " (slab " << b << ") after point " << order[k - 1]
@@ -148,7 +153,7 @@ TEST(ColouredScatter, TwoThreadsVisitEveryPointOnce) {
     ASSERT_GE(grid.cells(2) / slabRows(false), 2 * kMinParallelSlabs);
     for (const bool linear : {true, false}) {
         const Points<3> pts = makePoints(grid, 3 * kMinParallelItems, linear ? ShapeFunctionKind::Linear : ShapeFunctionKind::Gimp, 5);
-        std::vector<int> visits(pts.cell.size(), 0);
+        std::vector<int> visits(pts.shape.cell.size(), 0);
         const int before = omp_get_max_threads();
         omp_set_num_threads(2);
         forEachPointColoured(grid, pts.cellStart, slabRows(linear), [&](Index p) { ++visits[p]; });
