@@ -23,15 +23,20 @@ namespace qs {
 /// `drop` is the caller's scratch (reserved once, no allocation here).
 template <int D>
 Real removeLiquidAbove(Real zOverflow, Real density, LiquidPoints<D>& liquid, std::vector<char>& drop) {
-    const std::size_t n = liquid.size();
+    const Index n = static_cast<Index>(liquid.size());
+    auto above = [&](Index p) { return liquid.x[p * D + D - 1] > zOverflow; };
+    // The first point above, found in parallel (a serial scan would pull every thread's points
+    // through one core's cache, core/ForAll.hpp). The points are sorted by cell, so those above
+    // lie at the set's end, and only that tail is scanned and compacted, in order.
+    const Index first = firstOf(n, above);
+    if (first == n) return 0;
     drop.resize(n);
     Real volume = 0;
-    bool any = false;
-    for (std::size_t p = 0; p < n; ++p) {
-        drop[p] = liquid.x[p * D + D - 1] > zOverflow;
-        if (drop[p]) { volume += liquid.mass[p] / density; any = true; }
+    for (Index p = first; p < n; ++p) {
+        drop[p] = above(p);
+        if (drop[p]) volume += liquid.mass[p] / density;
     }
-    if (any) compactPoints(liquid, drop);
+    compactPoints(liquid, drop, static_cast<std::size_t>(first));
     return volume;
 }
 
@@ -39,6 +44,8 @@ Real removeLiquidAbove(Real zOverflow, Real density, LiquidPoints<D>& liquid, st
 /// `sandSurface()` gives the surface for the message (taken only then: it is a pass over the points).
 template <int D, class Surface>
 void checkSolidBelow(Real zOverflow, const SolidPoints<D>& solid, Real time, Surface&& sandSurface) {
+    const Index n = static_cast<Index>(solid.size());
+    if (!anyOf(n, [&](Index p) { return solid.x[p * D + D - 1] > zOverflow; })) return;
     for (std::size_t p = 0; p < solid.size(); ++p) {
         if (solid.x[p * D + D - 1] <= zOverflow) continue;
         std::ostringstream s;

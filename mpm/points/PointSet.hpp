@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/ForAll.hpp"
 #include "core/Types.hpp"
 
 namespace qs {
@@ -68,31 +69,39 @@ template <>
 inline std::vector<int>& scratchFor<int>(ReorderScratch& s) { return s.ints; }
 }  // namespace detail
 
-/// Reorders every field so that new point k is old point order[k].
+/// Reorders every field so that new point k is old point order[k]. In parallel, with the points
+/// split as every other loop over them splits them (core/ForAll.hpp): each thread writes the
+/// points it will update next. (Serial, the whole set went through one core's cache, and the
+/// other core fetched its half from there in the next phase.)
 template <class Set>
 void reorderPoints(Set& set, const std::vector<Index>& order, ReorderScratch& scratch) {
-    const std::size_t n = order.size();
+    const Index n = static_cast<Index>(order.size());
     set.forEachField([&](auto& field, int components) {
         using T = typename std::decay_t<decltype(field)>::value_type;
+        if (components == 0) return;  // a field of no components (no constitutive state)
         auto& tmp = detail::scratchFor<T>(scratch);
         tmp.resize(n * components);
-        for (std::size_t k = 0; k < n; ++k)
-            for (int c = 0; c < components; ++c)
-                tmp[k * components + c] = field[order[k] * components + c];
+        forAll(n, [&](Index k) {
+            for (int c = 0; c < components; ++c) tmp[k * components + c] = field[order[k] * components + c];
+        });
         // copy back rather than swap: the scratch keeps its capacity and nothing reallocates
-        std::copy(tmp.begin(), tmp.end(), field.begin());
+        forAll(n, [&](Index k) {
+            for (int c = 0; c < components; ++c) field[k * components + c] = tmp[k * components + c];
+        });
     });
 }
 
 /// Removes the points whose drop flag is set, keeping the order of the others (so a sorted set
-/// stays sorted). `drop` has one entry per point and is owned by the caller (no allocation here).
+/// stays sorted). `drop` has one entry per point from `first` on and is owned by the caller (no
+/// allocation here); the points before `first` stay and are not touched (rewritten in place by
+/// one thread, they would all move to its core's cache: core/ForAll.hpp).
 template <class Set>
-std::size_t compactPoints(Set& set, const std::vector<char>& drop) {
+std::size_t compactPoints(Set& set, const std::vector<char>& drop, std::size_t first = 0) {
     const std::size_t n = set.size();
     std::size_t kept = n;
     set.forEachField([&](auto& field, int components) {
-        std::size_t out = 0;
-        for (std::size_t p = 0; p < n; ++p) {
+        std::size_t out = first;
+        for (std::size_t p = first; p < n; ++p) {
             if (drop[p]) continue;
             for (int c = 0; c < components; ++c) field[out * components + c] = field[p * components + c];
             ++out;

@@ -182,7 +182,7 @@ void DoublePointSolver<D>::updatePressure() {
     const Real KL = config_.liquid.bulkModulus, dt = dt_;
     const Real pMin = config_.liquid.cavitationPressure;
     const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
-    forAll(grid_.numCells(), [&](Index c) {
+    forAllCells(grid_.numCells(), liquidCellStart_, [&](Index c) {
         if (liquidCellStart_[c + 1] == liquidCellStart_[c]) return;
         Real div = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {

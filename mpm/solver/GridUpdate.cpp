@@ -52,7 +52,7 @@ void DoublePointSolver<D>::computeForces() {
     // velocity; in 2D the points' strands sample the cells unevenly. The gradient is the last
     // step's (part of the state, checkpointed): taken from this step's plain means instead, the
     // correction extrapolated at the drained top of Terzaghi's column and blew up.
-    forAll(nc, [&](Index c) {
+    forAllCells(nc, liquidCellStart_, [&](Index c) {
         Real pv = 0, w = 0, centre[D];
         const IVec<D> cc = grid_.cellCoords(c);
         for (int a = 0; a < D; ++a) centre[a] = grid_.cellCentre(cc[a]);

@@ -12,7 +12,7 @@ namespace qs {
 
 template <int D>
 void DoublePointSolver<D>::switchLiquidState() {
-    forAll(grid_.numCells(), [&](Index c) {
+    forAllCells(grid_.numCells(), solidCellStart_, [&](Index c) {
         const Index first = solidCellStart_[c], last = solidCellStart_[c + 1];
         if (first == last) {
             cellFluidised_[c] = 0;

@@ -1,8 +1,6 @@
 #pragma once
-// The two parallel loop shapes of the solver, in one place (as MFEM's forall).
-//
-// forAll(n, f): f(i) for i in [0, n), OpenMP static schedule. Use it where every i writes only
-// its own outputs (nodes, cells, points reading the grid).
+// The solver's parallel scatter to the grid, and the stencil walk of uGIMP (the loops over
+// independent items, forAll and anyOf, are in core/ForAll.hpp).
 //
 // forEachPointColoured(grid, cellStart, rowsPerSlab, f): f(p) for every point, scattering to the
 // grid without races or locks: the grid is cut into slabs of whole rows of cells along the
@@ -26,58 +24,21 @@
 // 2 kMinParallelSlabs slabs (a shallow domain, under 4 rows linear or 6 uGIMP) scatters on one
 // thread.
 //
-// Small problems (a 1D column of a few dozen cells) run serially: there the cost of waking
+// Small problems (a 1D column of a few dozen cells) scatter serially: there the cost of waking
 // threads exceeds the work.
 #include <omp.h>
 
 #include <algorithm>
 #include <type_traits>
 
+#include "core/ForAll.hpp"
 #include "grid/Grid.hpp"
 
 namespace qs {
 
-constexpr Index kMinParallelItems = 4096;  ///< below this many items a loop runs serially
 constexpr Index kMinParallelSlabs = 2;     ///< below this many slabs per colour, serially
 constexpr Index kLinearSlabRows = 1;       ///< rows of cells per slab of a linear scatter (below)
 constexpr Index kGimpSlabRows = 3;         ///< rows of cells per slab of a uGIMP scatter
-
-/// The items [begin, end) of thread t of `threads` under OpenMP's static schedule without a
-/// chunk size (the first n % threads threads take one item more).
-struct Share {
-    Index begin, end;
-};
-inline Share staticShare(Index n, Index t, Index threads) {
-    const Index q = n / threads, r = n % threads;
-    const Index begin = t * q + std::min(t, r);
-    return {begin, begin + q + (t < r ? 1 : 0)};
-}
-
-template <class F>
-inline void forAll(Index n, F&& f) {
-    // Below the threshold the loop does not enter OpenMP at all: even a region whose `if` is
-    // false wakes the runtime's barrier with a futex system call, which cost a quarter of the wall
-    // time of a 1D column (21 loops a step).
-    if (n < kMinParallelItems) {
-        for (Index i = 0; i < n; ++i) f(i);
-        return;
-    }
-#pragma omp parallel for schedule(static)
-    for (Index i = 0; i < n; ++i) f(i);
-}
-
-/// Whether pred(i) holds for any i in [0, n) (a parallel OR; which i is the caller's to find).
-template <class F>
-inline bool anyOf(Index n, F&& pred) {
-    bool any = false;
-    if (n < kMinParallelItems) {
-        for (Index i = 0; i < n && !any; ++i) any = pred(i);
-        return any;
-    }
-#pragma omp parallel for schedule(static) reduction(|| : any)
-    for (Index i = 0; i < n; ++i) any = any || pred(i);
-    return any;
-}
 
 /// The rows of cells a slab of forEachPointColoured holds for points of the given shape functions.
 inline Index slabRows(bool linearShapes) { return linearShapes ? kLinearSlabRows : kGimpSlabRows; }

@@ -34,14 +34,23 @@ void DoublePointSolver<D>::computeShape(Set& set, std::vector<Index>& cellStart,
     auto& cell = set.shape.cell;
     forAll(n, [&](Index p) { cell[p] = grid_.cellOf(&set.x[p * D]); });
 
-    bool sorted = true;
-    for (Index p = 1; p < n && sorted; ++p) sorted = cell[p] >= cell[p - 1];
-    std::fill(counts.begin(), counts.end(), 0);
-    for (Index p = 0; p < n; ++p) ++counts[cell[p] + 1];
-    for (Index c = 0; c < grid_.numCells(); ++c) counts[c + 1] += counts[c];
-    std::copy(counts.begin(), counts.end(), cellStart.begin());
-    if (!sorted) {
+    // Sorted (most steps: few points change cells), each cell's first point is where the cells
+    // change, found in parallel. Every pass over the points here runs in parallel, each thread
+    // over its own share: a serial pass pulls all of them through one core's cache, and the other
+    // core's next phase fetches its half back from there (core/ForAll.hpp).
+    const Index nc = grid_.numCells();
+    const bool sorted = !anyOf(n, [&](Index p) { return p > 0 && cell[p] < cell[p - 1]; });
+    if (sorted) {
+        forAll(n, [&](Index p) {
+            for (Index c = p == 0 ? 0 : cell[p - 1] + 1; c <= cell[p]; ++c) cellStart[c] = p;
+        });
+        for (Index c = n == 0 ? 0 : cell[n - 1] + 1; c <= nc; ++c) cellStart[c] = n;
+    } else {
         // counting sort: stable, so points of a cell keep their relative order
+        std::fill(counts.begin(), counts.end(), 0);
+        for (Index p = 0; p < n; ++p) ++counts[cell[p] + 1];
+        for (Index c = 0; c < nc; ++c) counts[c + 1] += counts[c];
+        std::copy(counts.begin(), counts.end(), cellStart.begin());
         auto& order = scratch_.order;
         order.resize(n);
         for (Index p = 0; p < n; ++p) order[counts[cell[p]]++] = p;
@@ -81,7 +90,7 @@ void DoublePointSolver<D>::sortPoints() {
 template <int D>
 void DoublePointSolver<D>::classifyCells() {
     const Index nc = grid_.numCells();
-    forAll(nc, [&](Index c) {
+    forAllCells(nc, liquidCellStart_, [&](Index c) {
         Real vol = 0;
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) vol += liquid_.volume[p];
         cellLiquidVolume_[c] = vol;
@@ -107,7 +116,7 @@ void DoublePointSolver<D>::classifyCells() {
     const Index up = grid_.cellStride(D - 1);
     const Index rows = grid_.cells(D - 1);
     liquid_.weight.resize(liquid_.size());
-    forAll(nc, [&](Index c) {
+    forAllCells(nc, liquidCellStart_, [&](Index c) {
         const Index row = (c / up) % rows;
         const bool holdsLiquid = liquidCellStart_[c + 1] > liquidCellStart_[c];
         const bool above = (row + 1 < rows && cellFill_[c + up] >= kSubmergingFill) ||
