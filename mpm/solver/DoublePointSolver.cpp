@@ -106,7 +106,7 @@ void DoublePointSolver<D>::allocate() {
                     &drag_, &relSpeed_})
         a->assign(nn, 0.0);
     diffusionNode_.assign(nn, 0);
-    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velLOld_,
+    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velLIncrement_,
                     &pressureGradient_})
         a->assign(nn * D, 0.0);
     solidCellStart_.assign(nc + 1, 0);

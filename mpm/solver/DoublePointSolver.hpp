@@ -168,7 +168,7 @@ private:
 
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_,
-        velLOld_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
+        velLIncrement_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
     std::vector<char> diffusionNode_;  ///< nodes where the front diffusion acts
     bool anyDiffusion_ = false;        ///< whether any node is one
     std::vector<Real> pressureGradient_;  ///< Pa/m, [node][axis]

@@ -135,7 +135,7 @@ void DoublePointSolver<D>::gridToPoints() {
         forEachNodeOfPoint<linear>(grid_, liquid_, p, [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
                 const Real v = velL_[i * D + d];
-                dv[d] += N * (v - velLOld_[i * D + d]);
+                dv[d] += N * velLIncrement_[i * D + d];
                 vNew[d] += N * v;
                 div += v * gradN[d];
                 if constexpr (diffusion) gradPhi[d] -= gradN[d] * sandPorosity_[i];

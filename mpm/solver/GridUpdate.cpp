@@ -194,9 +194,9 @@ void DoublePointSolver<D>::solveNodes() {
             } else if (mS > 0) {
                 vS = masks_.solidFixed[k] ? 0.0 : vS1;
             }
-            velLOld_[k] = vL0;
             velS_[k] = vS;
             velL_[k] = vL;
+            velLIncrement_[k] = vL - vL0;  // what the FLIP update hands the liquid points
             w2 += (vL - vS) * (vL - vS);
         }
         relSpeed_[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
@@ -232,7 +232,11 @@ void DoublePointSolver<D>::uniformGateVelocity(Real resistance) {
     }
     const Real v = mass > 0 ? momentum / (mass + dt_ * resistance * wet * wet) : 0.0;
     for (Index i : masks_.gateNodes)
-        if (massL_[i] > 0) velL_[i * D + D - 1] = v;
+        if (massL_[i] > 0) {
+            const Index k = i * D + D - 1;
+            velL_[k] = v;
+            velLIncrement_[k] = v - momL_[k] / massL_[i];  // from the velocity before the step, as solveNodes
+        }
 }
 
 template void DoublePointSolver<1>::computeForces();
