@@ -24,8 +24,9 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
         const Real out = removeLiquidAbove(zOver, config_.liquid.density, liquid_, dropFlags_);
         if (out > 0) {
             outflowVolume_ += out;
-            // the cell lists are stale now: rebuild them for the chamber's scan below
-            computeShape(liquid_, liquidCellStart_, counts_);
+            // the cell lists are stale now: rebuild them for the chamber's scan below (the
+            // weights wait for the next step's sort)
+            sortByCell(liquid_, liquidCellStart_, counts_);
         }
     }
     if (config_.gate.mode != GateMode::Closed)

@@ -139,7 +139,9 @@ private:
     // helpers
     void allocate();
     template <class Set>
-    void computeShape(Set& set, std::vector<Index>& cellStart, std::vector<Index>& counts);
+    void sortByCell(Set& set, std::vector<Index>& cellStart, std::vector<Index>& counts);
+    template <class Set>
+    void computeWeights(Set& set);
     Real waterSurface() const;
     Real sandSurface() const;
     Real surchargeNow() const;

@@ -3,7 +3,7 @@
 // reaches, the one walk the transfers share whatever the shape functions:
 // - linear: the 2^D nodes of the point's cell, weights from its position (grid/LinearStencil.hpp),
 //   a fixed loop the compiler unrolls;
-// - uGIMP: the per-axis weights cached by the step's first phase (computeShape), up to 3 nodes
+// - uGIMP: the per-axis weights cached by the step's first phase (computeWeights), up to 3 nodes
 //   per axis, walked by forStencil (solver/Parallel.hpp).
 // The positions do not change between the step's point-to-grid and grid-to-point phases, so both
 // see the same weights.

@@ -25,10 +25,10 @@ constexpr Real kSubmergingFill = 0.25;
 // 1 sort points by cell, classify cells
 // ---------------------------------------------------------------------------------------------
 
+/// Each point's cell, the points sorted by cell (stable) and each cell's first point (cellStart).
 template <int D>
 template <class Set>
-void DoublePointSolver<D>::computeShape(Set& set, std::vector<Index>& cellStart,
-                                        std::vector<Index>& counts) {
+void DoublePointSolver<D>::sortByCell(Set& set, std::vector<Index>& cellStart, std::vector<Index>& counts) {
     const Index n = static_cast<Index>(set.size());
     set.shape.resize(n);
     auto& cell = set.shape.cell;
@@ -57,9 +57,15 @@ void DoublePointSolver<D>::computeShape(Set& set, std::vector<Index>& cellStart,
         reorderPoints(set, order, scratch_);
         forAll(n, [&](Index p) { cell[p] = grid_.cellOf(&set.x[p * D]); });
     }
+}
 
-    // linear shape functions are taken from the positions where they are used (PointStencil.hpp)
+/// uGIMP's per-axis weights of every point, cached for the step's transfers. Linear shape
+/// functions are taken from the positions where they are used (PointStencil.hpp): nothing to do.
+template <int D>
+template <class Set>
+void DoublePointSolver<D>::computeWeights(Set& set) {
     if (!set.shape.weights) return;
+    const Index n = static_cast<Index>(set.size());
     const auto kind = config_.grid.shapeFunctions;
     const Real h = grid_.h(), lp = set.halfLength;
     // the region each set fills: the grid, and for the sand only what is above the filter
@@ -83,8 +89,10 @@ void DoublePointSolver<D>::computeShape(Set& set, std::vector<Index>& cellStart,
 
 template <int D>
 void DoublePointSolver<D>::sortPoints() {
-    computeShape(solid_, solidCellStart_, counts_);
-    computeShape(liquid_, liquidCellStart_, counts_);
+    sortByCell(solid_, solidCellStart_, counts_);
+    sortByCell(liquid_, liquidCellStart_, counts_);
+    computeWeights(solid_);
+    computeWeights(liquid_);
 }
 
 template <int D>
@@ -181,7 +189,7 @@ void DoublePointSolver<D>::pointsToGrid() {
     // Solid: mass, momentum, grain volume, drag sums and the effective-stress force
     // F_int,S = sum grad(N)^T sigma' V (subtracted).
     // The sand rests on the filter and never reaches below it. A uGIMP point next to the filter
-    // has its domain cut there (computeShape), so it leaves nothing on the chamber's nodes; a
+    // has its domain cut there (computeWeights), so it leaves nothing on the chamber's nodes; a
     // sliver there (weight ~ (displacement/h)^2) would meet the cell-based interaction force,
     // which does not scale with the solid present, and be driven wildly (found as a 10 % slower,
     // and with one point per cell a stalled, consolidation above the closed base). The points
@@ -278,7 +286,7 @@ void DoublePointSolver<D>::pointsToGrid() {
             }
         });
     } else {
-        // uGIMP: the cached per-axis weights (computeShape), up to 3 nodes per axis
+        // uGIMP: the cached per-axis weights (computeWeights), up to 3 nodes per axis
         forEachPointColoured(grid_, solidCellStart_, slabRows(false), [&](Index p) {
             const SolidShares t = sharesOf(p);
             Real v[D], C[D * D];
@@ -435,19 +443,25 @@ template void DoublePointSolver<1>::sortPoints();
 template void DoublePointSolver<1>::classifyCells();
 template void DoublePointSolver<1>::pointsToGrid();
 template void DoublePointSolver<1>::measureSandPorosity();
-template void DoublePointSolver<1>::computeShape(SolidPoints<1>&, std::vector<Index>&, std::vector<Index>&);
-template void DoublePointSolver<1>::computeShape(LiquidPoints<1>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<1>::sortByCell(SolidPoints<1>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<1>::sortByCell(LiquidPoints<1>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<1>::computeWeights(SolidPoints<1>&);
+template void DoublePointSolver<1>::computeWeights(LiquidPoints<1>&);
 template void DoublePointSolver<2>::sortPoints();
 template void DoublePointSolver<2>::classifyCells();
 template void DoublePointSolver<2>::pointsToGrid();
 template void DoublePointSolver<2>::measureSandPorosity();
-template void DoublePointSolver<2>::computeShape(SolidPoints<2>&, std::vector<Index>&, std::vector<Index>&);
-template void DoublePointSolver<2>::computeShape(LiquidPoints<2>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<2>::sortByCell(SolidPoints<2>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<2>::sortByCell(LiquidPoints<2>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<2>::computeWeights(SolidPoints<2>&);
+template void DoublePointSolver<2>::computeWeights(LiquidPoints<2>&);
 template void DoublePointSolver<3>::sortPoints();
 template void DoublePointSolver<3>::classifyCells();
 template void DoublePointSolver<3>::pointsToGrid();
 template void DoublePointSolver<3>::measureSandPorosity();
-template void DoublePointSolver<3>::computeShape(SolidPoints<3>&, std::vector<Index>&, std::vector<Index>&);
-template void DoublePointSolver<3>::computeShape(LiquidPoints<3>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<3>::sortByCell(SolidPoints<3>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<3>::sortByCell(LiquidPoints<3>&, std::vector<Index>&, std::vector<Index>&);
+template void DoublePointSolver<3>::computeWeights(SolidPoints<3>&);
+template void DoublePointSolver<3>::computeWeights(LiquidPoints<3>&);
 
 }  // namespace qs
