@@ -9,7 +9,8 @@
 // the cell cellOf gives (the upper one for a point exactly on a node), so the slopes are compared
 // with the reference's only away from nodes. The reference takes the slope +1/h at its own node
 // there, with nothing from the others: their sum is then 1/h, not 0, and a uniform velocity had a
-// strain at such a point; the stencil's slopes sum to zero everywhere (checked).
+// strain at such a point (the solver clamps points onto walls, the filter and the grid's top,
+// which are node planes); the stencil's slopes sum to zero everywhere (checked).
 #include <gtest/gtest.h>
 
 #include <cmath>
