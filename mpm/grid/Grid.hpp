@@ -139,6 +139,17 @@ public:
         // for u >= 0 the conversion is the floor (std::floor is a library call without SSE4.1)
         return !(u >= 0) ? 0 : (u >= static_cast<Real>(cells_[d]) ? cells_[d] - 1 : static_cast<Index>(u));
     }
+    /// m, the first coordinate from c h up that cellOf puts in cell c along axis d: c h itself,
+    /// or the next doubles above it where fl(c h) (1/h) rounds below c (for h = 0.0062 that is 218
+    /// of the rows 1 to 399). A point the solver holds on a node plane, the sand on the filter,
+    /// is held here, so that it is in the cell above the plane and its slopes reach that cell's
+    /// upper nodes (in the cell below, the sand's would reach only the chamber, where it leaves
+    /// nothing, and the filter row: slopes summing to 1/h, a strain under a uniform velocity).
+    Real firstInCell(int d, Index c) const {
+        Real x = c * h_;
+        while (cellAlong(d, x * invH_) < c) x = std::nextafter(x, HUGE_VAL);
+        return x;
+    }
     /// The cell holding x (clamped to the grid).
     Index cellOf(const Real* x) const {
         Index k = 0;

@@ -16,6 +16,8 @@
 // point-to-grid and the grid-to-point phases (the positions do not change in between). uGIMP,
 // whose weights depend on the point's domain and its cuts, keeps the cached per-axis weights
 // (grid/ShapeFunctions.hpp, PointsToGrid.cpp).
+#include <algorithm>
+
 #include "grid/Grid.hpp"
 
 namespace qs {
@@ -27,7 +29,6 @@ struct LinearStencil {
     Real N[kNodes];           ///< N_k(x_p)
     Real grad[kNodes][D];     ///< dN_k/dx_a (1/m)
     Real xi[D];               ///< the point's place in its cell per axis (0..1)
-    Index cellRow;            ///< the cell's coordinate along the vertical axis
 
     /// 0 or 1: corner k's node along axis d.
     static constexpr int bit(int k, int d) { return (k >> d) & 1; }
@@ -48,13 +49,15 @@ inline LinearStencil<D> linearStencil(const Grid<D>& grid, const Real* x) {
         // not own (solver/Parallel.hpp)
         const Real u = x[d] * invH;
         const Index c = grid.cellAlong(d, u);
-        s.xi[d] = u - static_cast<Real>(c);
+        // inside the grid u - c is in [0, 1) exactly; on the far boundary fl(x (1/h)) can exceed
+        // the cell count by an ulp, and a point outside (from a checkpoint) would extrapolate:
+        // both keep the nearest face's weights instead, none negative
+        s.xi[d] = std::min(std::max(u - static_cast<Real>(c), Real(0)), Real(1));
         w[d][0] = 1 - s.xi[d];
         w[d][1] = s.xi[d];
         dw[d][0] = -invH;
         dw[d][1] = invH;
         first += c * grid.nodeStride(d);
-        if (d == D - 1) s.cellRow = c;
     }
 #pragma GCC unroll 8
     for (int k = 0; k < LinearStencil<D>::kNodes; ++k) {
