@@ -85,6 +85,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         monitorNodes_.push_back(row);
     }
     sandBottomRow_ = roundCells(config.filterLevel(), h);
+    sandFloor_ = grid_.firstInCell(D - 1, sandBottomRow_);
     if (config.column.overflowLevel) overflowRow_ = roundCells(*config.column.overflowLevel, h);
 
     initialLiquidMass_ = 0;

@@ -189,6 +189,7 @@ private:
     Real initialLiquidMass_ = 0, initialGapVolume_ = 0;
     std::vector<Index> monitorNodes_;
     Index sandBottomRow_ = 0;
+    Real sandFloor_ = 0;  ///< m, where the sand is held on the filter: in the cell above it (Grid::firstInCell)
     Index overflowRow_ = -1;  ///< cell rows below the overflow level (-1: no overflow)
 };
 

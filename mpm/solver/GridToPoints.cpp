@@ -33,7 +33,7 @@ void DoublePointSolver<D>::gridToPoints() {
     // would carry its lowest points up to lp below the filter plane, into the chamber's cells
     Real sandLowest[D];
     for (int d = 0; d < D; ++d) sandLowest[d] = lowest[d];
-    sandLowest[D - 1] = grid_.firstInCell(D - 1, sandBottomRow_);  // in the cell above the filter
+    sandLowest[D - 1] = sandFloor_;
     // The solid's update, with the front diffusion's sums only on steps that have any: with no
     // diffusion node no point diffuses (its weights sum to 1, so some node with N > 0 is not one)
     auto solidPoint = [&](Index p, auto withDiffusion, auto linearShapes) {

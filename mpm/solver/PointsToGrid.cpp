@@ -250,9 +250,11 @@ void DoublePointSolver<D>::pointsToGrid() {
             }
             // the sand never reaches below the filter (gridToPoints keeps it above); a point
             // found there all the same (a checkpoint of an older version) leaves nothing below it
-            Real N[LinearStencil<D>::kNodes];
-            for (int k = 0; k < LinearStencil<D>::kNodes; ++k)
-                N[k] = st.node[0] >= firstSolidNode || st.node[k] >= firstSolidNode ? st.N[k] : 0.0;
+            Real keep[LinearStencil<D>::kNodes], N[LinearStencil<D>::kNodes];
+            for (int k = 0; k < LinearStencil<D>::kNodes; ++k) {
+                keep[k] = st.node[k] >= firstSolidNode ? 1.0 : 0.0;
+                N[k] = keep[k] * st.N[k];
+            }
             // three passes over the nodes, each with few values live (one pass spilled registers)
 #pragma GCC unroll 8
             for (int k = 0; k < LinearStencil<D>::kNodes; ++k) {
@@ -272,15 +274,13 @@ void DoublePointSolver<D>::pointsToGrid() {
                     mom[i * D + d] += N[k] * mv;
                 }
             }
-            const Real filterFactor = st.node[0] >= firstSolidNode ? 1.0 : 0.0;
 #pragma GCC unroll 8
             for (int k = 0; k < LinearStencil<D>::kNodes; ++k) {
                 const Index i = st.node[k];
-                const Real keep = st.node[k] >= firstSolidNode ? 1.0 : filterFactor;
                 for (int d = 0; d < D; ++d) {
                     Real f = 0;
                     for (int e = 0; e < D; ++e) f += t.stressV[d][e] * st.grad[k][e];
-                    force[i * D + d] += keep * f;
+                    force[i * D + d] += keep[k] * f;
                 }
                 if (axisymmetric) force[i * D] -= t.hoop * N[k];
             }
