@@ -70,27 +70,48 @@ TRIAD
             OMP_NUM_THREADS=$threads "$build_dir/tools/benchmarks/quicksand_benchmarks" \
                 --benchmark_filter='BM_Step[23]D' --benchmark_min_time=1 --benchmark_format=csv 2>/dev/null \
                 > "$work/lateral_${threads}_$round.csv"
+            # a CSV report takes one set of counters, so this one is a run of its own
+            OMP_NUM_THREADS=$threads "$build_dir/tools/benchmarks/quicksand_benchmarks" \
+                --benchmark_filter='BM_StepSynchronisation' --benchmark_min_time=1 --benchmark_format=csv 2>/dev/null \
+                > "$work/sync_${threads}_$round.csv"
         done
     done
     /usr/bin/python3 - "$work" "$rounds" "${triad[1]}" "${triad[2]}" <<'PY'
 import csv, sys
 work, rounds = sys.argv[1], int(sys.argv[2])
 triad = {1: float(sys.argv[3]), 2: float(sys.argv[4])}
-def rows(t, r):
-    with open(f"{work}/lateral_{t}_{r}.csv") as f:
+def rows(t, r, what="lateral"):
+    with open(f"{work}/{what}_{t}_{r}.csv") as f:
         lines = [l for l in f if l.startswith('"BM_') or l.startswith("name")]
     return {row["name"]: row for row in csv.DictReader(lines)}
 runs = {t: [rows(t, r) for r in range(1, rounds + 1)] for t in (1, 2)}
+syncs = {t: [rows(t, r, "sync") for r in range(1, rounds + 1)] for t in (1, 2)}
 print(f"best of {rounds} interleaved rounds; 'spread' is the slowest round's rate over the best's")
 print(f"{'benchmark':<16}{'points':>10}{'M upd/s 1t':>12}{'M upd/s 2t':>12}{'speed-up':>10}{'B/point':>9}"
       f"{'bw 1t':>8}{'bw 2t':>8}{'spread 1t':>11}{'spread 2t':>11}")
-for name, r1 in runs[1][0].items():
+steps = runs[1][0]
+for name, r1 in steps.items():
     rate = {t: [float(run[name]["items_per_second"]) for run in runs[t]] for t in (1, 2)}
     u1, u2 = max(rate[1]), max(rate[2])
     b = float(r1["bytes_per_point"])
     print(f"{name:<16}{float(r1['points']):>10.0f}{u1/1e6:>12.2f}{u2/1e6:>12.2f}{u2/u1:>10.2f}{b:>9.0f}"
           f"{b*u1/1e9/triad[1]:>8.1%}{b*u2/1e9/triad[2]:>8.1%}"
           f"{min(rate[1])/u1:>11.2f}{min(rate[2])/u2:>11.2f}")
+# What synchronising a step's phases costs on 2 threads (BM_StepSynchronisation: the step's
+# parallel regions with next to no work), and the speed-up it leaves each column at best, with
+# perfect balance and no serial code: t1 / (t1 / 2 + cost).
+def micro(t, name):
+    best = min(float(run[name]["real_time"]) for run in syncs[t])
+    return best * {"ns": 1e-3, "us": 1.0, "ms": 1e3}[syncs[t][0][name]["time_unit"]]
+cost = {}
+for arg, how in (("0", "a region per phase (the step today)"), ("1", "one region, a barrier per phase")):
+    name = f"BM_StepSynchronisation/{arg}"
+    cost[arg] = micro(2, name) - micro(1, name) / 2
+    print(f"synchronising {float(syncs[1][0][name]['phases']):.0f} phases on 2 threads, {how}: {cost[arg]:.1f} us a step")
+print(f"{'best speed-up':<16}{'as today':>10}{'one region':>12}")
+for name, r1 in steps.items():
+    t1 = float(r1["points"]) / max(float(run[name]["items_per_second"]) for run in runs[1]) * 1e6
+    print(f"{name:<16}{t1 / (t1 / 2 + cost['0']):>10.2f}{t1 / (t1 / 2 + cost['1']):>12.2f}")
 PY
     exit 0
 fi

@@ -8,12 +8,20 @@
 // <columns> cells of the cross-section wide (2D: columns across; 3D: about sqrt(columns) by
 // sqrt(columns)), about 200 points per column: 1e4 to 1e6 points. Counters: points, and
 // bytes_per_point, the resident memory the solver added (grid included) per point.
+// BM_StepSynchronisation/<0|1>: what synchronising the step's phases costs on this machine, with
+// next to no work: kPhasesPerStep loops of 2048 items, each its own parallel region (/0, as the
+// step runs today), or all in one region with a barrier after each loop (/1). On 2 threads its
+// time less half its 1-thread time bounds the lateral benchmarks' speed-up (tools/benchmark.sh
+// --lateral prints the bound).
 #include <benchmark/benchmark.h>
+#include <omp.h>
 
 #include <cmath>
 #include <fstream>
 #include <memory>
+#include <malloc.h>
 #include <unistd.h>
+#include <vector>
 
 #include "io/CaseLoader.hpp"
 #include "reservoir/ReservoirModel.hpp"
@@ -70,6 +78,9 @@ void BM_StepLateral(benchmark::State& state) {
     c.grid.dimension = D;
     c.grid.width = across * c.grid.cellSize;
     c.grid.crossSectionArea = D == 3 ? c.grid.width * c.grid.width : c.grid.crossSectionArea;
+    // the memory an earlier, larger benchmark freed goes back to the system first: reused in
+    // place, it added nothing to the resident size (BM_Step3D/49 after BM_Step2D/5000 read 0)
+    malloc_trim(0);
     const double before = residentBytes();
     auto reservoir = qs::makeReservoirModel(c);
     qs::DoublePointSolver<D> solver(c, *reservoir);
@@ -87,6 +98,33 @@ void BM_StepLateral(benchmark::State& state) {
 }
 BENCHMARK_TEMPLATE(BM_StepLateral, 2)->Name("BM_Step2D")->Arg(50)->Arg(500)->Arg(5000)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_StepLateral, 3)->Name("BM_Step3D")->Arg(49)->Arg(484)->Arg(5041)->Unit(benchmark::kMillisecond);
+
+/// The parallel regions of one step of BM_Step2D/50 and BM_Step3D/49 (callgrind's count of calls
+/// to GOMP_parallel over 60 steps: 1605, with the set-up's).
+constexpr int kPhasesPerStep = 26;
+
+void BM_StepSynchronisation(benchmark::State& state) {
+    const bool oneRegion = state.range(0) == 1;
+    std::vector<double> a(2048, 1.0);
+    const long n = static_cast<long>(a.size());
+    for (auto _ : state) {
+        if (oneRegion) {
+#pragma omp parallel
+            for (int phase = 0; phase < kPhasesPerStep; ++phase) {
+#pragma omp for schedule(static)
+                for (long i = 0; i < n; ++i) a[i] += 1e-9;
+            }
+        } else {
+            for (int phase = 0; phase < kPhasesPerStep; ++phase) {
+#pragma omp parallel for schedule(static)
+                for (long i = 0; i < n; ++i) a[i] += 1e-9;
+            }
+        }
+        benchmark::DoNotOptimize(a.data());
+    }
+    state.counters["phases"] = kPhasesPerStep;
+}
+BENCHMARK(BM_StepSynchronisation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
 
