@@ -89,8 +89,7 @@ syncs = {t: [rows(t, r, "sync") for r in range(1, rounds + 1)] for t in (1, 2)}
 print(f"best of {rounds} interleaved rounds; 'spread' is the slowest round's rate over the best's")
 print(f"{'benchmark':<16}{'points':>10}{'M upd/s 1t':>12}{'M upd/s 2t':>12}{'speed-up':>10}{'B/point':>9}"
       f"{'bw 1t':>8}{'bw 2t':>8}{'spread 1t':>11}{'spread 2t':>11}")
-steps = runs[1][0]
-for name, r1 in steps.items():
+for name, r1 in runs[1][0].items():
     rate = {t: [float(run[name]["items_per_second"]) for run in runs[t]] for t in (1, 2)}
     u1, u2 = max(rate[1]), max(rate[2])
     b = float(r1["bytes_per_point"])
@@ -109,7 +108,7 @@ for arg, how in (("0", "a region per phase (the step today)"), ("1", "one region
     cost[arg] = micro(2, name) - micro(1, name) / 2
     print(f"synchronising {float(syncs[1][0][name]['phases']):.0f} phases on 2 threads, {how}: {cost[arg]:.1f} us a step")
 print(f"{'best speed-up':<16}{'as today':>10}{'one region':>12}")
-for name, r1 in steps.items():
+for name, r1 in runs[1][0].items():
     t1 = float(r1["points"]) / max(float(run[name]["items_per_second"]) for run in runs[1]) * 1e6
     print(f"{name:<16}{t1 / (t1 / 2 + cost['0']):>10.2f}{t1 / (t1 / 2 + cost['1']):>12.2f}")
 PY

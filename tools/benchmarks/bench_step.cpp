@@ -9,7 +9,7 @@
 // sqrt(columns)), about 200 points per column: 1e4 to 1e6 points. Counters: points, and
 // bytes_per_point, the resident memory the solver added (grid included) per point.
 // BM_StepSynchronisation/<0|1>: what synchronising the step's phases costs on this machine, with
-// next to no work: kPhasesPerStep loops of 2048 items, each its own parallel region (/0, as the
+// next to no work: kPhasesPerStep loops of 2048 items, each its own parallel region (/0: forAll, as the
 // step runs today), or all in one region with a barrier after each loop (/1). On 2 threads its
 // time less half its 1-thread time bounds the lateral benchmarks' speed-up (tools/benchmark.sh
 // --lateral prints the bound).
@@ -23,6 +23,7 @@
 #include <unistd.h>
 #include <vector>
 
+#include "core/ForAll.hpp"
 #include "io/CaseLoader.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"
@@ -105,7 +106,7 @@ constexpr int kPhasesPerStep = 26;
 
 void BM_StepSynchronisation(benchmark::State& state) {
     const bool oneRegion = state.range(0) == 1;
-    std::vector<double> a(2048, 1.0);
+    std::vector<double> a(2 * qs::kMinParallelItems, 1.0);
     const long n = static_cast<long>(a.size());
     for (auto _ : state) {
         if (oneRegion) {
@@ -114,11 +115,8 @@ void BM_StepSynchronisation(benchmark::State& state) {
 #pragma omp for schedule(static)
                 for (long i = 0; i < n; ++i) a[i] += 1e-9;
             }
-        } else {
-            for (int phase = 0; phase < kPhasesPerStep; ++phase) {
-#pragma omp parallel for schedule(static)
-                for (long i = 0; i < n; ++i) a[i] += 1e-9;
-            }
+        } else {  // the step's own loop, above its serial threshold
+            for (int phase = 0; phase < kPhasesPerStep; ++phase) qs::forAll(n, [&](qs::Index i) { a[i] += 1e-9; });
         }
         benchmark::DoNotOptimize(a.data());
     }
