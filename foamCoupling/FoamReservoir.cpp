@@ -8,6 +8,7 @@
 #include <fstream>
 #include <sstream>
 
+#include "FeedLineCase.hpp"
 #include "core/Error.hpp"
 
 namespace qs::foam {
@@ -57,6 +58,8 @@ void loadPlugin() {
 
 FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume)
     : caseName_(config.reservoir.openfoamCase),
+      gatePatch_(config.reservoir.gatePatch),
+      reservoirPatch_(config.reservoir.reservoirPatch),
       density_(config.liquid.density),
       gravity_(config.gravity),
       area_(config.reservoir.area) {
@@ -65,9 +68,7 @@ FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume)
     const fs::path source(config.reservoir.openfoamCase);
     QS_CHECK(fs::is_directory(source), "case.toml: key 'reservoir.openfoam_case': OpenFOAM case directory "
                                            << source.string() << " does not exist");
-    for (const char* needed : {"system/controlDict", "system/fvSchemes", "system/fvSolution",
-                               "constant/transportProperties", "0/U", "0/p"})
-        QS_CHECK(fs::exists(source / needed), "OpenFOAM case " << caseName_ << ": missing " << needed);
+    requireSupportedCase(caseName_);
 
     const fs::path out = fs::path(config.caseDirectory) / config.output.directory;
     fs::create_directories(out);
@@ -80,34 +81,48 @@ FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume)
     std::ofstream(work / "openfoam.foam");  // ParaView opens the case through this (empty) file
     logFile_ = fs::absolute(out / "openfoam.log").string();
     meshIfNeeded(work, logFile_, caseName_);
-
     loadPlugin();
-    TubeSettings s;
-    s.caseDirectory = workDir_.c_str();
-    s.gatePatch = config.reservoir.gatePatch.c_str();
-    s.reservoirPatch = config.reservoir.reservoirPatch.c_str();
-    s.logFile = logFile_.c_str();
-    char error[4096] = "";
-    tube_.reset(createTube(&s, error, sizeof error));
-    QS_CHECK(tube_, "OpenFOAM case " << caseName_ << ": " << error << " (OpenFOAM's log: " << logFile_ << ")");
+    if (!resume) startTube(-1);  // a resume starts it at the checkpoint's CFD time (restoreState)
 }
 
 FoamReservoir::~FoamReservoir() = default;
 
-std::string FoamReservoir::name() const { return "OpenFOAM tube " + caseName_; }
+void FoamReservoir::startTube(double startTime) {
+    tube_.reset();  // one OpenFOAM case open at a time
+    TubeSettings s;
+    s.caseDirectory = workDir_.c_str();
+    s.gatePatch = gatePatch_.c_str();
+    s.reservoirPatch = reservoirPatch_.c_str();
+    s.logFile = logFile_.c_str();
+    s.startTime = startTime;
+    char error[8192] = "";
+    tube_.reset(createTube(&s, error, sizeof error));
+    // OpenFOAM names the run's working copy; the user knows their own case
+    QS_CHECK(tube_, "OpenFOAM case " << caseName_ << ": " << userPaths(error));
+}
+
+std::string FoamReservoir::userPaths(std::string text) const {
+    const std::string user = fs::absolute(caseName_).lexically_normal().string();
+    for (std::size_t at; (at = text.find(workDir_)) != std::string::npos;) text.replace(at, workDir_.size(), user);
+    return text;
+}
+
+std::string FoamReservoir::name() const { return "OpenFOAM case " + caseName_; }
+
+std::string FoamReservoir::description() const { return tube_ ? tube_->description() : ""; }
 
 double FoamReservoir::initialGatePressure() const { return density_ * gravity_ * head_; }
 
 double FoamReservoir::solveWindow(double /*t*/, double dt, double flux) {
     trialHead_ = head_ - flux * dt / area_;
-    // the level at the window's middle drives the tube over the window
+    // the level at the window's middle drives the line over the window
     const double p0 = gravity_ * 0.5 * (head_ + trialHead_);
     double p = 0;
     try {
         p = tube_->solve(dt, flux, p0, pending_);
     } catch (const std::exception& e) {
         throw Error("OpenFOAM case " + caseName_ + " failed at t = " + std::to_string(tube_->time()) +
-                    " s: " + e.what() + " (OpenFOAM's log: " + logFile_ + ")");
+                    " s: " + userPaths(e.what()) + " (OpenFOAM's log: " + logFile_ + ")");
     }
     pending_ = true;
     return density_ * p;
@@ -116,6 +131,12 @@ double FoamReservoir::solveWindow(double /*t*/, double dt, double flux) {
 void FoamReservoir::acceptWindow() {
     head_ = trialHead_;
     pending_ = false;
+    try {
+        tube_->accept();  // the case's function objects see the coupled solution
+    } catch (const std::exception& e) {
+        throw Error("OpenFOAM case " + caseName_ + ": a function object of system/controlDict failed at t = " +
+                    std::to_string(tube_->time()) + " s: " + userPaths(e.what()));
+    }
 }
 
 std::vector<double> FoamReservoir::saveState() const { return {head_, tube_->time()}; }
@@ -125,17 +146,17 @@ void FoamReservoir::restoreState(const std::vector<double>& state) {
     head_ = trialHead_ = state[0];
     pending_ = false;
     try {
-        tube_->restart(state[1]);
-    } catch (const std::exception& e) {
-        throw Error("OpenFOAM case " + caseName_ + ": cannot resume: " + e.what());
+        startTube(state[1]);
+    } catch (const Error& e) {
+        throw Error(std::string(e.what()) + " (cannot resume; OpenFOAM's log: " + logFile_ + ")");
     }
 }
 
-void FoamReservoir::writeOutput(double t) {
+void FoamReservoir::writeOutput(double /*t*/) {
     try {
-        tube_->write(t);
+        tube_->write();
     } catch (const std::exception& e) {
-        throw Error("OpenFOAM case " + caseName_ + ": writing fields failed: " + e.what());
+        throw Error("OpenFOAM case " + caseName_ + ": writing fields failed: " + userPaths(e.what()));
     }
 }
 

@@ -10,7 +10,11 @@
 //   - the gate flux enters the tube's gate patch as the velocity Q / A_gate (out of the tube);
 //   - the gate pressure returned is rho times the area-averaged kinematic p on the gate patch;
 //   - OpenFOAM's own output goes to OUTPUT/openfoam.log; its fields are written at the output
-//     times into OUTPUT/openfoam/<time>/ so ParaView opens the tube beside the column.
+//     times and checkpoints into OUTPUT/openfoam/<time>/ (every digit: a resume reopens the case
+//     there), so ParaView opens the line beside the column; the case's function objects write
+//     to OUTPUT/openfoam/postProcessing/ once per accepted window;
+//   - a case quicksand cannot run is refused before OpenFOAM is loaded (FeedLineCase.hpp), and
+//     OpenFOAM's own errors name the user's case, not the working copy.
 // No OpenFOAM header here: the OpenFOAM code is a plugin loaded at run time (FoamTube.hpp).
 #include <memory>
 #include <string>
@@ -33,15 +37,22 @@ public:
     void acceptWindow() override;
     double head() const override { return head_; }
     /// The level and the CFD time; the fields themselves are written at checkpoints
-    /// (writeOutput) and read back by restoreState from OUTPUT/openfoam/<time>/.
+    /// (writeOutput) and restoreState reopens the case at OUTPUT/openfoam/<time>/.
     std::vector<double> saveState() const override;
     void restoreState(const std::vector<double>& state) override;
     void writeOutput(double t) override;
 
     const std::string& workDirectory() const { return workDir_; }
+    /// One line: the algorithm and models OpenFOAM selected from the case.
+    std::string description() const;
 
 private:
-    std::string caseName_, workDir_, logFile_;
+    /// Opens the working copy with OpenFOAM, at the case's own start or (a resume) at startTime.
+    void startTube(double startTime);
+    /// OpenFOAM's message with the working copy's path replaced by the user's case.
+    std::string userPaths(std::string text) const;
+
+    std::string caseName_, gatePatch_, reservoirPatch_, workDir_, logFile_;
     double density_, gravity_, area_;
     double head_ = 0, trialHead_ = 0;
     bool pending_ = false;      ///< a window was solved and not yet accepted

@@ -19,6 +19,7 @@ void CouplingScheme::restoreState(const std::vector<double>& s) {
     lastFlux_ = s[0];
     lastPressure_ = s[1];
     previousFlux_ = s[2];
+    aitken_ = s.size() > 3 ? s[3] : 0;  // checkpoints before the factor was kept restart from none
     started_ = true;
 }
 

@@ -88,8 +88,9 @@ public:
     /// Pa s/m3, the damping impedance the implicit scheme applies about each window's flux.
     void setGateImpedance(double z) { impedance_ = z; }
     double lastFlux() const { return lastFlux_; }
-    /// For checkpoints: the scheme's own state (last flux and pressure).
-    std::vector<double> saveState() const { return {lastFlux_, lastPressure_, previousFlux_}; }
+    /// For checkpoints: the scheme's whole state (last fluxes and pressure, the Aitken factor the
+    /// next window starts from), so that a resumed run repeats the straight run bit for bit.
+    std::vector<double> saveState() const { return {lastFlux_, lastPressure_, previousFlux_, aitken_}; }
     void restoreState(const std::vector<double>& s);
 
 protected:

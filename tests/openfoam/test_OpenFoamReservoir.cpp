@@ -227,7 +227,7 @@ TEST(OpenFoamReservoir, BrokenCasesGiveClearErrors) {
                                                "openfoam_case = \"reservoir\"\ngate_patch = \"outlet\""); },
          "no patch named outlet"},
         {"bad-dictionary",
-         [](const fs::path& d) { replaceInFile(d / "reservoir/system/fvSolution", "PISO", "PISO {"); },
+         [](const fs::path& d) { replaceInFile(d / "reservoir/system/fvSolution", "PIMPLE", "PIMPLE {"); },
          "fvSolution"},
         {"bad-blockMeshDict",
          [](const fs::path& d) { replaceInFile(d / "reservoir/system/blockMeshDict", "blocks", "blocks ("); },

@@ -1,0 +1,81 @@
+#include "FeedLineCase.hpp"
+
+#include <filesystem>
+#include <fstream>
+#include <regex>
+#include <sstream>
+
+#include "core/Error.hpp"
+
+namespace qs::foam {
+
+namespace fs = std::filesystem;
+
+namespace {
+
+/// The file's text without C and C++ comments (OpenFOAM dictionaries use both).
+std::string dictionaryText(const fs::path& file) {
+    std::ifstream in(file);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    static const std::regex comments(R"(//[^\n]*|/\*[\s\S]*?\*/)");
+    return std::regex_replace(ss.str(), comments, " ");
+}
+
+bool hasDictionary(const std::string& text, const std::string& name) {
+    return std::regex_search(text, std::regex("(^|[\\s;}])" + name + "\\s*\\{"));
+}
+
+std::string keywordValue(const std::string& text, const std::string& key) {
+    std::smatch m;
+    if (std::regex_search(text, m, std::regex("(^|[\\s;{}])" + key + "\\s+([^;\\s]+)\\s*;"))) return m[2];
+    return "";
+}
+
+}  // namespace
+
+void requireSupportedCase(const std::string& directory) {
+    const fs::path dir(directory);
+    auto fail = [&](const std::string& file, const std::string& why) {
+        throw Error("OpenFOAM case " + directory + ": " + file + ": " + why);
+    };
+    // a case for another kind of solver: say which, and what runs
+    const std::string supported =
+        "quicksand's feed line is incompressible single-phase flow solved with pimpleFoam's algorithm "
+        "(docs/openfoam.md)";
+    if (fs::exists(dir / "constant/thermophysicalProperties"))
+        fail("constant/thermophysicalProperties", "a compressible or heat-transfer case; " + supported);
+    if (fs::is_directory(dir / "0")) {
+        for (const auto& e : fs::directory_iterator(dir / "0")) {
+            const std::string name = e.path().filename().string();
+            if (name.rfind("alpha.", 0) == 0 || name == "alphas")
+                fail("0/" + name, "a multiphase case (a phase fraction); " + supported);
+            if (name == "p_rgh")
+                fail("0/p_rgh", "a buoyant or multiphase case (p_rgh); " + supported + ", whose pressure is p");
+        }
+    }
+    for (const char* needed : {"system/controlDict", "system/fvSchemes", "system/fvSolution",
+                               "constant/transportProperties", "0/U", "0/p"})
+        if (!fs::exists(dir / needed)) fail(needed, "missing (a pimpleFoam case has it)");
+    if (!fs::exists(dir / "constant/turbulenceProperties"))
+        fail("constant/turbulenceProperties",
+             "missing; pimpleFoam needs it: 'simulationType laminar;' for laminar flow, or "
+             "'simulationType RAS; RAS { RASModel kOmegaSST; turbulence on; }' (docs/openfoam.md)");
+    const std::string fvSolution = dictionaryText(dir / "system/fvSolution");
+    if (!hasDictionary(fvSolution, "PIMPLE")) {
+        const std::string had = hasDictionary(fvSolution, "PISO")   ? "a PISO dictionary (icoFoam, pisoFoam)"
+                                : hasDictionary(fvSolution, "SIMPLE") ? "a SIMPLE dictionary (simpleFoam: steady)"
+                                                                      : "no algorithm dictionary";
+        fail("system/fvSolution", "has " + had + " but no PIMPLE dictionary; quicksand runs pimpleFoam's "
+             "algorithm (transient). Add 'PIMPLE { nOuterCorrectors 1; nCorrectors 2; "
+             "nNonOrthogonalCorrectors 0; }' (nOuterCorrectors 1 is PISO) and solvers for pFinal and UFinal");
+    }
+    if (fs::exists(dir / "constant/dynamicMeshDict")) {
+        const std::string type = keywordValue(dictionaryText(dir / "constant/dynamicMeshDict"), "dynamicFvMesh");
+        if (!type.empty() && type != "staticFvMesh")
+            fail("constant/dynamicMeshDict", "dynamicFvMesh " + type +
+                 ": a moving or changing mesh; quicksand's feed line runs on a static mesh (staticFvMesh)");
+    }
+}
+
+}  // namespace qs::foam
