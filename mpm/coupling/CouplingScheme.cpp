@@ -29,10 +29,12 @@ void CouplingScheme::advanceWindow(MpmSide& mpm, double end) {
         started_ = true;
     }
     const double t0 = mpm.time();
-    // a whole number of MPM steps per window, the last window ending at `end`
+    // a whole number of MPM steps per window, the last window cut to end at `end` only where a
+    // whole window would overshoot it: a run that ends (and checkpoints) on a window boundary then
+    // solves exactly the windows of a longer run, and its resume repeats that run bit for bit
     const double steps = std::max(1.0, std::round(config_.window / mpm.dt()));
     double dt = steps * mpm.dt();
-    if (t0 + dt > end - 0.5 * mpm.dt()) dt = std::max(mpm.dt(), end - t0);
+    if (t0 + dt > end + 0.5 * mpm.dt()) dt = std::max(mpm.dt(), end - t0);
     solveWindow(mpm, t0, dt);
     ++stats_.windows;
 }
@@ -93,7 +95,7 @@ void ImplicitCoupling::solveWindow(MpmSide& mpm, double t0, double dt) {
         stats_.lastResidual = std::abs(r) / scale;
         if (log_)
             *log_ << std::setprecision(9) << "window t = " << t0 << " iteration " << k + 1
-                  << " flux " << flux << " mpm flux " << mpmFlux << " residual "
+                  << " flux " << flux << " gate pressure " << pEnd << " mpm flux " << mpmFlux << " residual "
                   << stats_.lastResidual << " omega " << omega << " impedance " << impedance_ << "\n";
         if (stats_.lastResidual <= config_.tolerance) { converged = true; break; }
         if (k > 0 && r != rPrev) omega = -omega * rPrev / (r - rPrev);  // Aitken (scalar form)

@@ -249,12 +249,28 @@ TEST(OpenFoamReservoir, BrokenCasesGiveClearErrors) {
     }
 }
 
-TEST(OpenFoamReservoir, CoupledRunResumesFromItsCheckpoint) {
+/// The series rows of a run's output from time t on (the straight and the resumed run's rows,
+/// compared as text: every digit).
+std::vector<std::string> seriesFrom(const fs::path& caseDir, double t) {
+    std::ifstream in(caseDir / "output/series.csv");
+    std::vector<std::string> rows;
+    std::string line;
+    std::getline(in, line);  // header
+    while (std::getline(in, line))
+        if (std::stod(line.substr(0, line.find(','))) >= t) rows.push_back(line);
+    return rows;
+}
+
+TEST(OpenFoamReservoir, CoupledRunResumesFromItsCheckpointBitForBit) {
     QS_REQUIRE_OPENFOAM();
-    // the checkpoint holds the column, the reservoir level and the coupling state; the tube's
-    // fields are written beside it (output/openfoam/<t>/) and read back on resume
+    // the checkpoint holds the column, the reservoir level and the coupling's whole state (fluxes,
+    // pressure, Aitken factor); the line's fields are written beside it with every digit
+    // (output/openfoam/<t>/) and the OpenFOAM case is reopened there. A run stopped where the
+    // straight run checkpoints (a window boundary) and resumed repeats the straight run exactly.
+    // the Deltares U-tube: its heavy water takes several coupling iterations a window, so the
+    // resumed run must start from the Aitken factor the straight run had (fails without it)
     auto prepare = [](const std::string& tag) {
-        const fs::path dir = freshCaseCopy("verification/openfoam_short_tube", tag);
+        const fs::path dir = freshCaseCopy("verification/openfoam_utube", tag);
         CaseConfig c = loadCase(dir.string());
         c.time.end = 0.2;
         c.time.outputInterval = 0.02;
@@ -263,37 +279,45 @@ TEST(OpenFoamReservoir, CoupledRunResumesFromItsCheckpoint) {
     };
     const CaseConfig straight = prepare("resume-straight");
     const Outcome a = run(straight);
+    // the window boundary where the straight run checkpointed (and wrote its output of t = 0.1)
+    double tc = 0;
+    for (const auto& s : a.series)
+        if (s.time > 0.09) { tc = s.time; break; }
+    ASSERT_GT(tc, 0.09);
     const CaseConfig split = prepare("resume-split");
     RunOptions first;
     first.quiet = true;
-    first.endTime = 0.1;
+    first.endTime = tc;
     runCase(split, first);
     RunOptions again;
     again.quiet = true;
     again.resume = true;
     const RunSummary b = runCase(split, again);
-    EXPECT_NEAR(b.final.time, a.summary.final.time, 1e-9);
-    // not to round-off: the first run's last window is cut short at its end time, so the resumed
-    // run's windows are offset from the straight run's (about 2e-4 of the flux here)
-    EXPECT_NEAR(b.final.gateFlux, a.summary.final.gateFlux, 1e-3 * a.summary.final.gateFlux);
-    EXPECT_NEAR(b.final.reservoirHead, a.summary.final.reservoirHead, 1e-6);
-    EXPECT_NEAR(b.final.gatePressure, a.summary.final.gatePressure, 1e-3 * a.summary.final.gatePressure);
+    EXPECT_EQ(b.final.time, a.summary.final.time);
+    EXPECT_EQ(b.final.gateFlux, a.summary.final.gateFlux);
+    EXPECT_EQ(b.final.reservoirHead, a.summary.final.reservoirHead);
+    EXPECT_EQ(b.final.gatePressure, a.summary.final.gatePressure);
+    const auto ra = seriesFrom(fs::path(straight.caseDirectory), tc), rb = seriesFrom(fs::path(split.caseDirectory), tc);
+    ASSERT_EQ(ra.size(), rb.size());
+    ASSERT_GE(ra.size(), 5u);
+    for (std::size_t k = 0; k < ra.size(); ++k) EXPECT_EQ(ra[k], rb[k]) << "series row " << k;
 }
 
-TEST(OpenFoamReservoir, AnInterruptedCoupledRunCheckpointsAndResumes) {
+TEST(OpenFoamReservoir, AnInterruptedCoupledRunCheckpointsAndResumesBitForBit) {
     QS_REQUIRE_OPENFOAM();
     // SIGINT during a coupled run: the coupling window in progress ends, the checkpoint (column,
-    // reservoir level, coupling state, the tube's fields) is written, Interrupted says how to
-    // resume; resumed, the run ends where a run never interrupted does (to the same tolerance as
-    // a periodic checkpoint: windows are the unit the tube advances in)
+    // reservoir level, coupling state, the line's fields) is written, Interrupted says how to
+    // resume; resumed, the run repeats the run never interrupted, every digit of its series
     auto prepare = [](const std::string& tag) {
-        const fs::path dir = freshCaseCopy("verification/openfoam_short_tube", tag);
+        const fs::path dir = freshCaseCopy("verification/openfoam_utube", tag);
         CaseConfig c = loadCase(dir.string());
         c.time.end = 0.2;
         c.time.outputInterval = 0.02;
+        c.time.checkpointInterval = 0;
         return c;
     };
-    const Outcome a = run(prepare("interrupt-straight"));
+    const CaseConfig straight = prepare("interrupt-straight");
+    const Outcome a = run(straight);
     const CaseConfig split = prepare("interrupt-split");
     RunOptions first;
     first.quiet = true;
@@ -312,8 +336,11 @@ TEST(OpenFoamReservoir, AnInterruptedCoupledRunCheckpointsAndResumes) {
     again.quiet = true;
     again.resume = true;
     const RunSummary b = runCase(split, again);
-    EXPECT_NEAR(b.final.time, a.summary.final.time, 1e-9);
-    EXPECT_NEAR(b.final.gateFlux, a.summary.final.gateFlux, 1e-3 * a.summary.final.gateFlux);
-    EXPECT_NEAR(b.final.reservoirHead, a.summary.final.reservoirHead, 1e-6);
-    EXPECT_NEAR(b.final.gatePressure, a.summary.final.gatePressure, 1e-3 * a.summary.final.gatePressure);
+    EXPECT_EQ(b.final.time, a.summary.final.time);
+    EXPECT_EQ(b.final.gateFlux, a.summary.final.gateFlux);
+    EXPECT_EQ(b.final.reservoirHead, a.summary.final.reservoirHead);
+    EXPECT_EQ(b.final.gatePressure, a.summary.final.gatePressure);
+    const auto ra = seriesFrom(fs::path(straight.caseDirectory), 0.11), rb = seriesFrom(fs::path(split.caseDirectory), 0.11);
+    ASSERT_EQ(ra.size(), rb.size());
+    for (std::size_t k = 0; k < ra.size(); ++k) EXPECT_EQ(ra[k], rb[k]) << "series row " << k;
 }
