@@ -40,7 +40,27 @@ Real removeLiquidAbove(Real zOverflow, Real density, LiquidPoints<D>& liquid, st
     return volume;
 }
 
-/// Solid reaching the overflow means the bed expanded beyond the column: an error naming it.
+/// Removes the solid points above zOverflow: sand the water carries out over the column's rim
+/// (column.sand_overflow = "carry"); returns their mass of grains (kg). A point leaves whole, once
+/// its centre passes the rim, as a liquid point does. The solid points are sorted by cell, so
+/// those above lie at the set's end. `drop` is the caller's scratch.
+template <int D>
+Real removeSolidAbove(Real zOverflow, SolidPoints<D>& solid, std::vector<char>& drop) {
+    const Index n = static_cast<Index>(solid.size());
+    auto above = [&](Index p) { return solid.x[p * D + D - 1] > zOverflow; };
+    const Index first = firstOf(n, above);
+    if (first == n) return 0;
+    drop.resize(n);
+    Real mass = 0;
+    for (Index p = first; p < n; ++p) {
+        drop[p] = above(p);
+        if (drop[p]) mass += solid.mass[p];
+    }
+    compactPoints(solid, drop, static_cast<std::size_t>(first));
+    return mass;
+}
+
+/// Solid reaching the overflow with column.sand_overflow = "stop": an error naming it.
 /// `sandSurface()` gives the surface for the message (taken only then: it is a pass over the points).
 template <int D, class Surface>
 void checkSolidBelow(Real zOverflow, const SolidPoints<D>& solid, Real time, Surface&& sandSurface) {
@@ -51,7 +71,8 @@ void checkSolidBelow(Real zOverflow, const SolidPoints<D>& solid, Real time, Sur
         std::ostringstream s;
         s << "solid points reached the overflow level column.overflow_level = " << zOverflow
           << " m at t = " << time << " s (sand surface " << sandSurface()
-          << " m): the bed expanded beyond the column; raise the overflow level and the grid top";
+          << " m): the bed expanded beyond the column (column.sand_overflow = \"stop\"; \"carry\" lets the water "
+             "carry it out), or raise the overflow level and the grid top";
         throw Error(s.str());
     }
 }

@@ -29,6 +29,8 @@ enum class ConstitutiveModelKind { LinearElastic, MohrCoulomb };
 enum class InitialStress { K0, Zero };
 enum class InitialState { Solid, Fluidised };
 enum class GateMode { Pressure, Flux, Closed };
+/// What sand reaching the overflow level does: leaves with the water, or stops the run.
+enum class SandOverflow { Carry, Stop };
 enum class ReservoirKind { ConstantHead, Lumped, OpenFoam };
 enum class CouplingKind { Explicit, Implicit };
 
@@ -48,6 +50,7 @@ struct ColumnConfig {
     double chamberHeight = 0.0;        ///< m, free-water chamber below the filter (>= 1 cell)
     double waterLevel = 0.0;           ///< m, initial free surface elevation (>= sand top)
     std::optional<double> overflowLevel;  ///< m, outflow level (>= waterLevel); none: no outflow
+    SandOverflow sandOverflow = SandOverflow::Carry;  ///< sand reaching the overflow level
     double top = 0.0;                  ///< m, top of the grid (> overflow and water levels)
 };
 

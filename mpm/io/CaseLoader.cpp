@@ -40,7 +40,7 @@ constexpr const char* kRootKeys[] = {"title",  "grid",      "column",  "material
                                      "output"};
 constexpr const char* kGridKeys[] = {"dimension", "cell_size", "width", "cross_section_area",
                                      "shape_functions", "geometry"};
-constexpr const char* kColumnKeys[] = {"chamber_height", "water_level", "overflow_level", "top"};
+constexpr const char* kColumnKeys[] = {"chamber_height", "water_level", "overflow_level", "sand_overflow", "top"};
 constexpr const char* kMaterialKeys[] = {
     "model",          "grain_density", "porosity",       "max_porosity",    "min_porosity",
     "youngs_modulus", "poisson_ratio", "friction_angle", "dilatancy_angle", "cohesion",
@@ -130,6 +130,8 @@ const Options<InitialStress> kStressOptions = {{"k0", InitialStress::K0},
                                                {"zero", InitialStress::Zero}};
 const Options<GateMode> kGateOptions = {
     {"pressure", GateMode::Pressure}, {"flux", GateMode::Flux}, {"closed", GateMode::Closed}};
+const Options<SandOverflow> kSandOverflowOptions = {{"carry", SandOverflow::Carry},
+                                                    {"stop", SandOverflow::Stop}};
 const Options<CouplingKind> kCouplingOptions = {{"explicit", CouplingKind::Explicit},
                                                    {"implicit", CouplingKind::Implicit}};
 const Options<ReservoirKind> kReservoirOptions = {{"constant_head", ReservoirKind::ConstantHead},
@@ -422,6 +424,7 @@ private:
             "height of the free-water chamber from the gate (z = 0) to the filter");
         col.waterLevel = s.optionalNumber("water_level", c_.sandTop(), anyValue("m"));
         col.overflowLevel = s.optionalNumber("overflow_level", anyValue("m"));
+        col.sandOverflow = s.choice("sand_overflow", SandOverflow::Carry, kSandOverflowOptions);
         col.top = s.requiredNumber("top", positive("m"),
                                    "top of the grid, above water and overflow levels");
     }

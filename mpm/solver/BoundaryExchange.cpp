@@ -2,6 +2,7 @@
 // overflow level, inflow injected at the chamber (physics.md section 2).
 #include <algorithm>
 #include <cmath>
+#include <iostream>
 
 #include "solver/DoublePointSolver.hpp"
 #include "boundary/Overflow.hpp"
@@ -20,7 +21,10 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
 
     if (config_.column.overflowLevel) {
         const Real zOver = *config_.column.overflowLevel;
-        checkSolidBelow(zOver, solid_, time_, [&] { return sandSurface(); });
+        if (config_.column.sandOverflow == SandOverflow::Stop)
+            checkSolidBelow(zOver, solid_, time_, [&] { return sandSurface(); });
+        else
+            carrySandOut(zOver);
         const Real out = removeLiquidAbove(zOver, config_.liquid.density, liquid_, dropFlags_);
         if (out > 0) {
             outflowVolume_ += out;
@@ -36,8 +40,26 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
     ++steps_;
 }
 
+/// Sand above the overflow level leaves with the water: its grains join the solid ledger
+/// (cumulative_solid_outflow), and the first time it happens a warning names the time.
+template <int D>
+void DoublePointSolver<D>::carrySandOut(Real zOver) {
+    const Real mass = removeSolidAbove(zOver, solid_, dropFlags_);
+    if (mass <= 0) return;
+    if (!warnedSandOut_)
+        std::cerr << "warning: at t = " << time_ << " s the bed reached the overflow level (" << zOver
+                  << " m): the water carries sand out of the column, counted in series.csv's "
+                     "cumulative_solid_outflow (column.sand_overflow = \"stop\" stops the run instead)\n";
+    solidOutflowMass_ += mass;
+    warnedSandOut_ = true;  // once a run: not part of the state, so a repeated window keeps it
+    sortByCell(solid_, solidCellStart_, counts_);
+}
+
 template void DoublePointSolver<1>::exchangeAtBoundaries();
 template void DoublePointSolver<2>::exchangeAtBoundaries();
 template void DoublePointSolver<3>::exchangeAtBoundaries();
+template void DoublePointSolver<1>::carrySandOut(Real);
+template void DoublePointSolver<2>::carrySandOut(Real);
+template void DoublePointSolver<3>::carrySandOut(Real);
 
 }  // namespace qs

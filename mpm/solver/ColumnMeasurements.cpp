@@ -57,6 +57,7 @@ ColumnState DoublePointSolver<D>::columnState() const {
     }
     s.cumulativeInflow = cumulativeInflow_;
     s.cumulativeOutflow = outflowVolume_;
+    s.cumulativeSolidOutflow = solidOutflowMass_;
     s.injectedVolume = chamber_.injectedVolume();
     for (Real m : solid_.mass) s.solidMass += m;
     for (Real m : liquid_.mass) s.liquidMass += m;

@@ -183,7 +183,7 @@ void DoublePointSolver<D>::runGravityStage() {
     std::fill(solid_.velocityGradient.begin(), solid_.velocityGradient.end(), 0.0);  // APIC's C: at rest too
     std::fill(liquid_.v.begin(), liquid_.v.end(), 0.0);
     std::fill(relSpeed_.begin(), relSpeed_.end(), 0.0);
-    cumulativeInflow_ = outflowVolume_ = 0;
+    cumulativeInflow_ = outflowVolume_ = solidOutflowMass_ = 0;
     chamber_.setInjectedVolume(0);
     initialLiquidMass_ = 0;
     for (Real m : liquid_.mass) initialLiquidMass_ += m;

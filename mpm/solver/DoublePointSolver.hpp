@@ -75,6 +75,7 @@ struct ColumnState {
     std::vector<Real> monitorFlux;  ///< m/s, filter velocity q = n (v_L - v_S) per monitor
     Real cumulativeInflow = 0;    ///< m3 through the gate (grid flux integrated in time)
     Real cumulativeOutflow = 0;   ///< m3 removed above the overflow level
+    Real cumulativeSolidOutflow = 0;  ///< kg of grains carried out above the overflow level
     Real injectedVolume = 0;      ///< m3 of liquid points injected at the chamber bottom
     Real ledgerResidual = 0;      ///< m3, inflow - outflow - stored (should stay ~0)
     Real solidMass = 0;           ///< kg
@@ -134,6 +135,7 @@ private:
     void gridToPoints();
     void updatePressure();
     void exchangeAtBoundaries();
+    void carrySandOut(Real zOverflow);
     void checkHealth() const;
 
     // helpers
@@ -186,6 +188,8 @@ private:
     Real dampingAlpha_ = 0;
     Real gateFlux_ = 0, gatePressure_ = 0;
     Real cumulativeInflow_ = 0, outflowVolume_ = 0;
+    Real solidOutflowMass_ = 0;      ///< kg of grains carried out over the overflow
+    bool warnedSandOut_ = false;     ///< the warning that sand leaves was given
     Real initialLiquidMass_ = 0, initialGapVolume_ = 0;
     std::vector<Index> monitorNodes_;
     Index sandBottomRow_ = 0;

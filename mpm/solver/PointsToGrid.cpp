@@ -138,22 +138,41 @@ void DoublePointSolver<D>::classifyCells() {
             liquid_.state[p] = (!above && thin) ? kFreeSurfaceLiquid : kSubmergedLiquid;
         }
     });
-    // The overflow's top cells count as full only while the water stands there: fallen half a
-    // cell below it (the reservoir drained the column, the water spilled elsewhere), the grid would
-    // hold water the column has lost, and the run stops saying so (the head is checked against the
-    // overflow before the run, io/CaseRules.cpp)
+    // The overflow's top cells count as full only while the water stands there: fallen a cell
+    // below it (the reservoir drained the column, the water spilled elsewhere), the grid would hold
+    // water the column has lost, and the run stops saying so (the head is checked against the
+    // overflow before the run, io/CaseRules.cpp).
+    // The water is measured over the top two rows, from the points' extents (a point's water spans
+    // z +- V / (2 a), a its footprint), and the run stops when they hold less than one row's worth.
+    // A liquid point leaves whole when its centre passes the rim, so the row under the rim loses up
+    // to half a point of water at once: half a cell in sand (two points a cell), more where a
+    // suspension's points have grown. Counted by centres in the top row alone, the Deltares
+    // column through a 10 mm tube stopped with its water at the rim all along: a bed heaving
+    // against the rim read 49.7 % each time its top point left (t = 7.75 s), and, fluidised, a
+    // point of 0.83 cells leaving left 46.7 % (t = 14.17 s).
     if (overflowRow_ > 0) {
         Real water = 0, room = 0;
-        const Index columns = grid_.numCells() / rows, first = (overflowRow_ - 1) * up;
-        for (Index c = first; c < first + columns; ++c) {
-            water += std::min(cellLiquidVolume_[c], grid_.cellVolume(c));
-            room += grid_.cellVolume(c);
+        const Index lowRow = overflowRow_ >= 2 ? overflowRow_ - 2 : 0;
+        const Index first = lowRow * up, last = overflowRow_ * up;  // cells of the rows measured
+        const Real zLow = lowRow * grid_.h(), zHigh = overflowRow_ * grid_.h();
+        for (Index c = first; c < last; ++c) room += grid_.cellVolume(c);
+        // their points and those of the row below, whose extents reach into them
+        const Index from = lowRow >= 1 ? (lowRow - 1) * up : first;
+        for (Index p = liquidCellStart_[from]; p < liquidCellStart_[last]; ++p) {
+            const Real z = liquid_.x[p * D + D - 1];
+            const Real area = grid_.pointFootprint(&liquid_.x[p * D], config_.points.liquidPerCell);
+            const Real half = 0.5 * liquid_.volume[p] / area;
+            const Real inside = std::min(z + half, zHigh) - std::max(z - half, zLow);
+            if (inside > 0) water += area * inside;
         }
-        QS_CHECK(water >= 0.5 * room,
+        const Real rowsMeasured = static_cast<Real>(overflowRow_ - lowRow);
+        const Real missing = std::max(Real(0), room - water) / room * rowsMeasured;  // in rows
+        QS_CHECK(missing <= 1,
                  "the water fell below the overflow level column.overflow_level = "
-                     << *config_.column.overflowLevel << " m at t = " << time_ << " s: its top row of cells is "
-                     << 100 * water / room << " % full. The overflow holds the water's surface at its level, "
-                        "so the reservoir's head must keep the column full to it");
+                     << *config_.column.overflowLevel << " m at t = " << time_ << " s: the top "
+                     << (overflowRow_ - lowRow) << " rows of cells under it lack " << missing
+                     << " rows of water. The overflow holds the water's surface at its level, so the reservoir's "
+                        "head must keep the column full to it");
     }
 }
 

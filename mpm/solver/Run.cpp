@@ -30,7 +30,7 @@ std::vector<std::string> seriesColumns(const CaseConfig& config) {
                                   "water_surface", "gradient"};
     for (const auto& m : config.monitors) c.push_back("q_" + m.name);
     for (const char* k : {"cumulative_inflow", "cumulative_outflow", "injected_volume", "ledger_residual",
-                          "solid_mass", "liquid_mass", "solid_points", "liquid_points"})
+                          "solid_mass", "liquid_mass", "solid_points", "liquid_points", "cumulative_solid_outflow"})
         c.push_back(k);
     return c;
 }
@@ -43,7 +43,7 @@ std::vector<double> seriesRow(const ColumnState& s) {
                              s.waterSurface, s.gradient};
     for (Real q : s.monitorFlux) r.push_back(q);
     for (double v : {s.cumulativeInflow, s.cumulativeOutflow, s.injectedVolume, s.ledgerResidual, s.solidMass,
-                     s.liquidMass, double(s.solidPoints), double(s.liquidPoints)})
+                     s.liquidMass, double(s.solidPoints), double(s.liquidPoints), s.cumulativeSolidOutflow})
         r.push_back(v);
     return r;
 }

@@ -127,7 +127,7 @@ void DoublePointSolver<D>::saveState(CheckpointData& data) const {
     data.put("reservoir", reservoir_.saveState());
     data.put("ledger", std::vector<double>{cumulativeInflow_, chamber_.injectedVolume(), outflowVolume_,
                                            initialLiquidMass_, initialGapVolume_, gateFlux_,
-                                           gatePressure_});
+                                           gatePressure_, solidOutflowMass_});
 }
 
 template <int D>
@@ -170,7 +170,9 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
                                              << ": written by another version of quicksand or for another grid");
     chamber_.gaps() = gaps;
     reservoir_.restoreState(finiteValues(data, "reservoir", 0));
-    const auto& l = finiteValues(data, "ledger", 7);
+    const auto& l = finiteValues(data, "ledger", 0);
+    QS_CHECK(l.size() == 7 || l.size() == 8,
+             "entry 'ledger' holds " << l.size() << " values, expected 8 (7 before the solid ledger)" << kNotThisCase);
     cumulativeInflow_ = l.at(0);
     chamber_.setInjectedVolume(l.at(1));
     outflowVolume_ = l.at(2);
@@ -178,6 +180,8 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     initialGapVolume_ = l.at(4);
     gateFlux_ = l.at(5);
     gatePressure_ = l.at(6);
+    solidOutflowMass_ = l.size() > 7 ? l.at(7) : 0.0;  // sand carried out: kept from 2026-12-04
+    warnedSandOut_ = warnedSandOut_ || solidOutflowMass_ > 0;
     gateLaw_ = reservoir_.gateLaw(time_);
     checkHealth();  // a state that loads must be one a step can take (a cell per step at most, ...)
 }

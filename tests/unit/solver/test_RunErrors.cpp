@@ -9,10 +9,12 @@
 
 using namespace qs;
 
-TEST(RunErrors, SolidReachingTheOverflowLevelIsNamed) {
+TEST(RunErrors, SolidReachingTheOverflowLevelIsNamedWhenAskedToStop) {
     // far above the critical gradient with no tube resistance the bed lifts off the filter
-    // (the filter holds the solid, so the column tears at the base) and rises to the overflow
+    // (the filter holds the solid, so the column tears at the base) and rises to the overflow;
+    // column.sand_overflow = "stop" ends the run there (the default carries the sand out)
     CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/critical_gradient");
+    c.column.sandOverflow = SandOverflow::Stop;
     c.column.waterLevel = c.sandTop() + c.grid.cellSize;
     c.column.overflowLevel = c.column.waterLevel;
     c.column.top = c.column.waterLevel + 4 * c.grid.cellSize;
@@ -34,7 +36,7 @@ TEST(RunErrors, SolidReachingTheOverflowLevelIsNamed) {
 
 TEST(RunErrors, WaterDrainingBelowTheOverflowIsNamed) {
     // the overflow holds the water's surface at its level; a head falling below it drains the
-    // column, and the run stops once the top row of cells is half empty, saying why
+    // column, and the run stops once the top two rows of cells lack a row of water, saying why
     CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/steady_seepage_coarse");
     c.reservoir.head = *c.column.overflowLevel;
     c.reservoir.headRate = -0.2;  // m/s: the head falls below the overflow at once
@@ -48,7 +50,7 @@ TEST(RunErrors, WaterDrainingBelowTheOverflowIsNamed) {
     } catch (const Error& e) {
         const std::string what = e.what();
         EXPECT_NE(what.find("fell below the overflow level column.overflow_level"), std::string::npos) << what;
-        EXPECT_NE(what.find("% full"), std::string::npos) << what;
+        EXPECT_NE(what.find("rows of water"), std::string::npos) << what;
     }
 }
 
