@@ -4,21 +4,22 @@
     /usr/bin/python3 tools/make_tube_case.py TEMPLATE OUT --diameter D --length L
                      [--axial N] [--radial N]
                      [--valve-k K [--valve-at X]] [--bends N [--bend-k KB] [--bend-at X1,X2,..]]
-                     [--zone-cells N]
 
 TEMPLATE is an OpenFOAM tube case such as cases/deltaresColumn/reservoir (patches reservoir,
 gate, wall, front, back, axis); OUT gets a copy with the pipe's diameter (m), developed length (m)
 and cell counts changed in system/blockMeshDict (a 5-degree wedge, axis along x, x = 0 at the
 reservoir patch). The tube's Hagen-Poiseuille resistance and inertial time are printed.
 
-Minor losses (a partly open valve, the U-tube's bends) become porosity zones: short cellZones
-made as named blocks by blockMesh, each with an fvOption explicitPorositySource of type
-DarcyForchheimer (d = 0, f = 2 K / Lz on all three axes) in OUT/constant/fvOptions, so that the
-zone of length Lz costs dp = K rho U^2 / 2 at the mean velocity U. The mesh's axial spacing
-stays uniform (L / nAxial): a zone is --zone-cells whole cells, starting at the cell face
-nearest to its position. One zone per loss: 'valve' and 'bend1', 'bend2', ... The sum of the
-loss coefficients is printed. See docs/openfoam.md, "A valve or bends in your own case", for the
-calibration (the zone acts on the local |u| u; tested within 2 % of K U^2 / 2).
+Minor losses (a partly open valve, the U-tube's bends) become pressure-jump baffles: a pair of
+cyclic patches NAME_half0 / NAME_half1 across the pipe, made by blockMesh at the cell face
+nearest to the loss's position, with p of type porousBafflePressure (D 0, I K, length 1,
+uniformJump true) and U (and any other field in 0/) cyclic. The jump is K U^2 / 2 (kinematic,
+U = the mean velocity through the baffle, either direction) and uniform over the section, so it
+changes the pressure level downstream and nothing else. porousBafflePressure's uniformJump
+takes the plain (not area-weighted) mean of the face velocities, so with losses the radial cells
+are equal-area rings (vertices at R sqrt(i / nRadial)); the axial spacing stays L / nAxial.
+One baffle per loss: 'valve' and 'bend1', 'bend2', ... The sum of the loss coefficients is
+printed. See docs/openfoam.md, "A valve or bends in your own case".
 """
 import argparse
 import math
@@ -76,41 +77,53 @@ def section_span(text, plain, key):
     fail("blockMeshDict: unbalanced '%s' entry" % key)
 
 
-def blocks_text(stations, zones):
-    """vertices, blocks, edges and boundary of a wedge pipe cut at the cell indices 'stations'
-    (x = station * $dx); zones maps a block index to its cellZone name"""
-    v = ["vertices", "("]
-    for k, s in enumerate(stations):
-        x = "$x%d" % k
-        v.append("    (%s 0 0)  (%s $yR $mzR)  (%s $yR $zR)   // %d, %d, %d: axis, wall back, wall front"
-                 % (x, x, x, 3 * k, 3 * k + 1, 3 * k + 2))
+def blocks_text(stations, baffles):
+    """vertices, blocks, edges and boundary of a wedge pipe cut at the stations x = $x0, $x1, ...;
+    baffles maps a station's index to the name of the cyclic baffle there"""
+    v, idx, n = ["vertices", "("], [], 0   # idx[k]: first vertex (upstream side, downstream side)
+    for k in range(len(stations)):
+        sides = 2 if k in baffles else 1
+        for side in range(sides):
+            what = "" if sides == 1 else " (%s side of %s)" % (("upstream", "downstream")[side], baffles[k])
+            v.append("    ($x%d 0 0)  ($x%d $yR $mzR)  ($x%d $yR $zR)   // %d, %d, %d: axis, wall back, wall front%s"
+                     % (k, k, k, n, n + 1, n + 2, what))
+            n += 3
+        idx.append((n - 3 * sides, n - 3))
     v += [");", "", "blocks", "("]
     v.append("    // local x1 = axial, x2 = radial, x3 = azimuthal (back -> front); the axis face")
-    v.append("    // collapses to an edge. A name after the vertices makes the block a cellZone.")
-    for k in range(len(stations) - 1):
-        a0, b0, f0, a1, b1, f1 = 3 * k, 3 * k + 1, 3 * k + 2, 3 * k + 3, 3 * k + 4, 3 * k + 5
-        v.append("    hex (%d %d %d %d %d %d %d %d) %s(%d $nRadial 1) simpleGrading (1 $rGrade 1)"
-                 % (a0, a1, b1, b0, a0, a1, f1, f0, zones[k] + " " if k in zones else "",
-                    stations[k + 1] - stations[k]))
+    v.append("    // collapses to an edge")
+    nb = len(stations) - 1
+    blk = [(idx[k][1], idx[k + 1][0]) for k in range(nb)]   # (upstream axis vertex, downstream)
+    for k, (a, b) in enumerate(blk):
+        v.append("    hex (%d %d %d %d %d %d %d %d) (%d $nRadial 1) simpleGrading (1 $rEqualArea 1)"
+                 % (a, b, b + 1, a + 1, a, b, b + 2, a + 2, stations[k + 1] - stations[k]))
     v += [");", "", "edges", "(", ");", "", "boundary", "("]
-    nb, last = len(stations) - 1, 3 * (len(stations) - 1)
 
-    def patch(name, kind, faces, comment=None):
+    def patch(name, kind, faces, comment=(), extra=None):
         v.extend(["    " + name, "    {"])
-        if comment:
-            v.extend("        // " + c for c in comment)
+        v.extend("        // " + c for c in comment)
         v.append("        type %s;" % kind)
-        v.append("        faces")
-        v.append("        (")
+        if extra:
+            v.append("        " + extra)
+        v.extend(["        faces", "        ("])
         v.extend("            (%d %d %d %d)" % f for f in faces)
         v.extend(["        );", "    }"])
 
-    patch("reservoir", "patch", [(0, 0, 2, 1)])
+    first, last = idx[0][1], idx[-1][0]
+    patch("reservoir", "patch", [(first, first, first + 2, first + 1)])
     patch("gate", "patch", [(last, last + 1, last + 2, last)])
-    patch("wall", "wall", [(3 * k + 1, 3 * k + 2, 3 * k + 5, 3 * k + 4) for k in range(nb)])
-    patch("front", "wedge", [(3 * k, 3 * k + 3, 3 * k + 5, 3 * k + 2) for k in range(nb)])
-    patch("back", "wedge", [(3 * k, 3 * k + 1, 3 * k + 4, 3 * k + 3) for k in range(nb)])
-    patch("axis", "empty", [(3 * k, 3 * k + 3, 3 * k + 3, 3 * k) for k in range(nb)],
+    for k in sorted(baffles):
+        up, down = idx[k]
+        patch(baffles[k] + "_half0", "cyclic", [(up, up + 1, up + 2, up)],
+              ["a pressure-jump baffle (porousBafflePressure in 0/p): its upstream side"],
+              "neighbourPatch %s_half1;" % baffles[k])
+        patch(baffles[k] + "_half1", "cyclic", [(down, down, down + 2, down + 1)],
+              ["the downstream side (its own vertices: blockMesh keeps the two apart)"],
+              "neighbourPatch %s_half0;" % baffles[k])
+    patch("wall", "wall", [(a + 1, a + 2, b + 2, b + 1) for a, b in blk])
+    patch("front", "wedge", [(a, b, b + 2, a + 2) for a, b in blk])
+    patch("back", "wedge", [(a, a + 1, b + 1, b) for a, b in blk])
+    patch("axis", "empty", [(a, b, b, a) for a, b in blk],
           ["the collapsed faces on the axis: blockMesh drops their zero-area",
            "faces, so this patch has no faces; named so that it is not",
            "left as 'defaultFaces'"])
@@ -118,61 +131,48 @@ def blocks_text(stations, zones):
     return "\n".join(v)
 
 
-FV_HEADER = """/*--------------------------------*- C++ -*----------------------------------*\\
-  =========                 |
-  \\\\      /  F ield         | OpenFOAM: The Open Source CFD Toolbox
-   \\\\    /   O peration     | Version:  v1912
-    \\\\  /    A nd           | Web:      www.openfoam.com
-     \\\\/     M anipulation  |
-\\*---------------------------------------------------------------------------*/
-FoamFile
-{
-    version     2.0;
-    format      ascii;
-    class       dictionary;
-    location    "constant";
-    object      fvOptions;
-}
-// * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * * //
-
-// Minor losses as porosity zones (made by tools/make_tube_case.py). DarcyForchheimer (v1912,
-// src/finiteVolume/cfdTools/general/porosityModel/DarcyForchheimer): the momentum sink is
-//   S = -(mu d + rho |U| f / 2) U        (the code stores F = f / 2)
-// so over a zone of length Lz a plug flow U loses dp / rho = (f Lz / 2) U^2: f = 2 K / Lz.
-// f is the same on all three axes: the zone resists radial flow too, so the profile is made
-// flat ahead of the zone and the zone's loss is K U^2 / 2 on the mean velocity.
-"""
+def add_patch_entries(path, entries):
+    """inserts the text 'entries' at the end of the boundaryField of the field file 'path'"""
+    text = open(path).read()
+    plain = strip_comments(text)
+    m = re.search(r"^boundaryField\b", plain, flags=re.M)
+    if not m:
+        fail("%s has no boundaryField" % path)
+    depth = 0
+    for j in range(plain.find("{", m.end()), len(plain)):
+        depth += {"{": 1, "}": -1}.get(plain[j], 0)
+        if depth == 0:
+            break
+    else:
+        fail("%s: unbalanced boundaryField" % path)
+    for name in re.findall(r"^    (\w+_half[01])$", entries, flags=re.M):
+        if re.search(r"^\s*%s\s*$" % name, plain[m.end():j], flags=re.M):
+            fail("%s already has an entry %s" % (path, name))
+    k = text.rfind("\n", 0, j) + 1
+    open(path, "w").write(text[:k] + entries + text[k:])
 
 
-def fv_entry(name, k, lz, f, x0, x1):
-    return """
-%(name)s
-{
-    // K = %(k).6g over x = %(x0).6g .. %(x1).6g m (Lz = %(lz).6g m): f = 2 K / Lz
-    type            explicitPorositySource;
-    active          yes;
-
-    explicitPorositySourceCoeffs
+def p_entries(name, k, x):
+    return """    %(name)s_half0
     {
-        selectionMode   cellZone;
-        cellZone        %(name)s;
-        type            DarcyForchheimer;
-
-        DarcyForchheimerCoeffs
-        {
-            d   (0 0 0);
-            f   (%(f).10g %(f).10g %(f).10g);
-
-            coordinateSystem
-            {
-                origin  (0 0 0);
-                e1      (1 0 0);
-                e2      (0 1 0);
-            }
-        }
+        // a localised loss at x = %(x).6g m (tools/make_tube_case.py):
+        // jump = -(D nu + I |U| / 2) U length, U = the mean of the face velocities
+        // (uniformJump; the faces are equal-area rings, so U = Q / A), so the
+        // kinematic pressure drops by K U |U| / 2 across it, K = I length = %(k).6g
+        type            porousBafflePressure;
+        patchType       cyclic;
+        D               0;
+        I               %(k).10g;
+        length          1;
+        uniformJump     true;
+        jump            uniform 0;
+        value           uniform 0;
     }
-}
-""" % dict(name=name, k=k, lz=lz, f=f, x0=x0, x1=x1)
+    %(name)s_half1
+    {
+        $%(name)s_half0;
+    }
+""" % dict(name=name, k=k, x=x)
 
 
 def main():
@@ -184,25 +184,33 @@ def main():
     ap.add_argument("--axial", type=int, default=None, help="cells along the pipe")
     ap.add_argument("--radial", type=int, default=None, help="cells across the radius")
     ap.add_argument("--valve-k", type=float, default=0.0,
-                    help="loss coefficient K of a partly open valve, dp = K rho U^2 / 2 on the "
-                    "pipe's mean velocity (default 0: no valve)")
+                    help="loss coefficient K of a partly open valve: dp = K rho U^2 / 2 at the "
+                    "pipe's mean velocity U (default 0: no valve)")
     ap.add_argument("--valve-at", type=float, default=None,
-                    help="m from the reservoir end to the valve zone's upstream end "
-                    "(default 10 diameters)")
+                    help="the valve's distance from the reservoir end, m (default 10 diameters)")
     ap.add_argument("--bends", type=int, default=0, help="number of bends (default 0)")
     ap.add_argument("--bend-k", type=float, default=BEND_K_DEFAULT,
-                    help="loss coefficient of one bend (default %g, a smooth 90-degree bend, "
-                    "turbulent)" % BEND_K_DEFAULT)
+                    help="loss coefficient of one bend (default %g: a smooth 90-degree bend, "
+                    "turbulent flow)" % BEND_K_DEFAULT)
     ap.add_argument("--bend-at", default=None,
-                    help="comma-separated positions of the bends' zones, m from the reservoir "
-                    "end (default: evenly spaced, at i L / (N + 1))")
-    ap.add_argument("--zone-cells", type=int, default=2,
-                    help="axial cells in each loss zone (default 2)")
+                    help="the bends' distances from the reservoir end, m, comma-separated "
+                    "(default: evenly spaced, i L / (N + 1))")
     a = ap.parse_args()
     if a.diameter <= 0 or a.length <= 0:
         fail("diameter and length must be > 0 (m)")
-    if a.valve_k < 0 or a.bend_k < 0 or a.bends < 0 or a.zone_cells < 1:
-        fail("--valve-k, --bend-k and --bends must be >= 0, --zone-cells >= 1")
+    if a.valve_k < 0 or a.bend_k < 0 or a.bends < 0:
+        fail("--valve-k, --bend-k and --bends must be >= 0")
+    losses = []   # (name, K, position)
+    if a.valve_k > 0:
+        losses.append(("valve", a.valve_k, 10 * a.diameter if a.valve_at is None else a.valve_at))
+    if a.bends > 0 and a.bend_k > 0:
+        if a.bend_at:
+            at = [float(s) for s in a.bend_at.split(",")]
+            if len(at) != a.bends:
+                fail("--bend-at has %d positions for %d bends" % (len(at), a.bends))
+        else:
+            at = [a.length * (i + 1) / (a.bends + 1) for i in range(a.bends)]
+        losses += [("bend%d" % (i + 1), a.bend_k, x) for i, x in enumerate(at)]
     shutil.copytree(a.template, a.out, ignore=shutil.ignore_patterns("polyMesh", "[1-9]*", "0.*"))
     path = a.out + "/system/blockMeshDict"
     text = open(path).read()
@@ -221,70 +229,58 @@ def main():
         if n != 1:
             fail("%s has no single '%s' entry" % (path, key))
 
-    # minor losses: (name, K, position)
-    losses = []
-    if a.valve_k > 0:
-        losses.append(("valve", a.valve_k, 10 * a.diameter if a.valve_at is None else a.valve_at))
-    if a.bends > 0 and a.bend_k > 0:
-        if a.bend_at:
-            at = [float(s) for s in a.bend_at.split(",")]
-            if len(at) != a.bends:
-                fail("--bend-at has %d positions for %d bends" % (len(at), a.bends))
-        else:
-            at = [a.length * (i + 1) / (a.bends + 1) for i in range(a.bends)]
-        losses += [("bend%d" % (i + 1), a.bend_k, x) for i, x in enumerate(at)]
     if losses:
-        m = re.search(r"^nAxial\s+(\d+)\s*;", text, flags=re.M)
-        if not m:
-            fail("%s: nAxial is not a whole number" % path)
-        n_axial = int(m.group(1))
+        whole = {}
+        for key in ("nAxial", "nRadial"):
+            m = re.search(r"^%s\s+(\d+)\s*;" % key, text, flags=re.M)
+            if not m:
+                fail("%s: %s is not a whole number" % (path, key))
+            whole[key] = int(m.group(1))
+        n_axial, n_radial = whole["nAxial"], whole["nRadial"]
         dx = a.length / n_axial
-        nz = a.zone_cells
-        cells = {}   # first cell index -> (name, K)
+        at_face = {}   # cell face index -> (name, K)
         for name, k, x in sorted(losses, key=lambda t: t[2]):
-            i0 = int(round(x / dx))
-            if x < 0 or x > a.length or i0 < 1 or i0 + nz > n_axial - 1:
-                fail("the %s zone (%d cells of %.4g m from x = %.4g m) does not fit in the pipe "
-                     "with a cell to spare at either end" % (name, nz, dx, x))
-            if any(abs(i0 - j) < nz for j in cells):
-                fail("the %s zone at x = %.4g m overlaps another loss zone (cells of %.4g m)" % (name, x, dx))
-            cells[i0] = (name, k)
-        stations, zones = [0], {}
-        for i0 in sorted(cells):
-            if i0 > stations[-1]:
-                stations.append(i0)
-            zones[len(stations) - 1] = cells[i0][0]
-            stations.append(i0 + nz)
-        stations.append(n_axial)
+            i = int(round(x / dx))
+            if not 0 <= x <= a.length or not 1 <= i <= n_axial - 1:
+                fail("the %s baffle at x = %g m is not inside the pipe (a cell from either end; "
+                     "cells of %.4g m)" % (name, x, dx))
+            if i in at_face:
+                fail("the %s and %s baffles fall on the same cell face (x = %.6g m)"
+                     % (at_face[i][0], name, i * dx))
+            at_face[i] = (name, k)
+        stations = [0] + sorted(at_face) + [n_axial]
+        baffles = {s: at_face[i][0] for s, i in enumerate(stations) if i in at_face}
         plain = strip_comments(text)
         start = section_span(text, plain, "vertices")[0]
         end = section_span(text, plain, "boundary")[1]
-        xs = "\n".join("x%-3d %.12g;" % (k, s * dx) for k, s in enumerate(stations))
-        text = (text[:start]
-                + "// blocks cut at the loss zones (tools/make_tube_case.py): x stations, m\n"
-                + "// (the axial spacing stays $L / $nAxial = %.12g m)\n" % dx + xs + "\n\n"
-                + blocks_text(stations, zones) + text[end:])
-        fvo = [p for p in (a.out + "/constant/fvOptions", a.out + "/system/fvOptions") if os.path.exists(p)]
-        fv_path = fvo[0] if fvo else a.out + "/constant/fvOptions"
-        if fvo:
-            body = open(fv_path).read()
-            for name, _ in cells.values():
-                if re.search(r"^%s\b" % name, strip_comments(body), flags=re.M):
-                    fail("%s already has an entry '%s'" % (fv_path, name))
-            body = body.rstrip("\n") + "\n\n// minor losses added by tools/make_tube_case.py\n"
-        else:
-            body = FV_HEADER
-        lz = nz * dx
-        for i0 in sorted(cells):
-            name, k = cells[i0]
-            body += fv_entry(name, k, lz, 2 * k / lz, i0 * dx, (i0 + nz) * dx)
-            print("%s: %s zone x = %.6g .. %.6g m, K = %g, f = 2 K / Lz = %.6g 1/m"
-                  % (a.out, name, i0 * dx, (i0 + nz) * dx, k, 2 * k / lz))
-        body += "\n// ************************************************************************* //\n"
-        open(fv_path, "w").write(body)
-        print("%s: minor losses sum K = %g (%d zone%s in %s)"
-              % (a.out, sum(k for _, k in cells.values()), len(cells), "s" * (len(cells) > 1),
-                 os.path.relpath(fv_path, a.out)))
+        # equal-area radial rings: vertex i at R sqrt(i / N), one cell per grading section
+        rings = [math.sqrt(i / n_radial) for i in range(n_radial + 1)]
+        grading = " ".join("(%.10f 1 1)" % (rings[i + 1] - rings[i]) for i in range(n_radial))
+        head = ["// Made by tools/make_tube_case.py with %d loss baffle%s: the pipe is cut into blocks"
+                % (len(at_face), "s" * (len(at_face) > 1)),
+                "// at x = $x1 ... (m; the axial spacing stays $L / $nAxial = %.12g m), and the" % dx,
+                "// radial cells are equal-area rings (vertex i at R sqrt(i / nRadial); these",
+                "// %d sections of one cell each replace $rGrade), so that porousBafflePressure's" % n_radial,
+                "// plain mean of the face velocities is the mean velocity Q / A"]
+        head += ["x%-3d %.12g;" % (k, s * dx) for k, s in enumerate(stations)]
+        head += ["rEqualArea (%s);" % grading, ""]
+        text = text[:start] + "\n".join(head) + "\n" + blocks_text(stations, baffles) + text[end:]
+        # the fields: p jumps, everything else is plain cyclic
+        for field in sorted(os.listdir(a.out + "/0")):
+            fpath = a.out + "/0/" + field
+            if not os.path.isfile(fpath) or "boundaryField" not in open(fpath).read():
+                continue
+            if field == "p":
+                entries = "".join(p_entries(name, k, i * dx) for i, (name, k) in sorted(at_face.items()))
+            else:
+                entries = "".join("    %s_half0\n    {\n        type            cyclic;\n    }\n"
+                                  "    %s_half1\n    {\n        type            cyclic;\n    }\n"
+                                  % (name, name) for name, _ in at_face.values())
+            add_patch_entries(fpath, entries)
+        for i, (name, k) in sorted(at_face.items()):
+            print("%s: %s baffle at x = %.6g m, K = %g" % (a.out, name, i * dx, k))
+        print("%s: minor losses sum K = %g (%d baffle%s; dp = sum K rho U^2 / 2)"
+              % (a.out, sum(k for _, k in at_face.values()), len(at_face), "s" * (len(at_face) > 1)))
     open(path, "w").write(text)
     nu, g = 8.93e-7, 9.81
     rt = 128 * nu * a.length / (math.pi * g * a.diameter ** 4)
