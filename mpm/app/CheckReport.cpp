@@ -6,7 +6,9 @@
 #include <sstream>
 #include <string>
 
+#include "core/Constants.hpp"
 #include "physics/ClosedForms.hpp"
+#include "physics/PipeFriction.hpp"
 #include "physics/Permeability.hpp"
 #include "solver/ColumnBuilder.hpp"
 #include "solver/RunPreconditions.hpp"
@@ -31,13 +33,21 @@ double expectedSteadyFilterVelocity(const CaseConfig& config) {
     const double g = config.gravity, rho = config.liquid.density, mu = config.liquid.viscosity;
     const double tail = config.column.overflowLevel ? *config.column.overflowLevel : config.column.waterLevel;
     const double dh = config.reservoir.head - tail;
-    double tube = 0;  // head loss per filter velocity in the tube, s
-    if (config.reservoir.kind == ReservoirKind::Lumped && config.reservoir.tubeDiameter > 0)
-        tube = closed::tubeResistance(config.reservoir.tubeDiameter, config.reservoir.tubeLength, rho, g, mu) *
-               config.grid.crossSectionArea;
+    const auto& r = config.reservoir;
+    const bool hasTube = r.kind == ReservoirKind::Lumped && r.tubeDiameter > 0;
+    // the tube's head loss at filter velocity q: wall friction (Hagen-Poiseuille times the
+    // turbulent multiplier f Re / 64, as the lumped reservoir) and the minor losses K U^2 / 2g
+    auto tubeLoss = [&](double q) {
+        if (!hasTube) return 0.0;
+        const double Q = q * config.grid.crossSectionArea, At = kPi * r.tubeDiameter * r.tubeDiameter / 4;
+        const double re = rho * std::abs(Q / At) * r.tubeDiameter / mu;
+        const double phi = r.tubeFriction == TubeFriction::SmoothPipe ? friction::frictionMultiplier(re) : 1.0;
+        return closed::tubeResistance(r.tubeDiameter, r.tubeLength, rho, g, mu) * phi * Q +
+               r.minorLoss * (Q / At) * std::abs(Q / At) / (2 * g);
+    };
     // head lost at filter velocity q: sum over layers of L (mu q/kappa + F rho q|q|/sqrt(kappa)) / (rho g)
     auto loss = [&](double q) {
-        double h = tube * q;
+        double h = tubeLoss(q);
         for (const auto& layer : config.layers) {
             const auto& m = config.material(layer.material);
             const auto law = PermeabilityLaw::from(m);
@@ -147,6 +157,20 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         out << "expected steady filter velocity (Darcy-Forchheimer";
         if (config.reservoir.kind == ReservoirKind::Lumped && config.reservoir.tubeDiameter > 0) out << " + tube";
         out << ") " << q << " m/s, flux " << q * config.grid.crossSectionArea << " m3/s\n";
+        const auto& r = config.reservoir;
+        if (r.kind == ReservoirKind::Lumped && r.tubeDiameter > 0) {
+            const double U = q * config.grid.crossSectionArea / (kPi * r.tubeDiameter * r.tubeDiameter / 4);
+            const double re = rho * std::abs(U) * r.tubeDiameter / config.liquid.viscosity;
+            out << "tube: mean velocity " << U << " m/s, Re " << re << " ("
+                << (re < 2000 ? "laminar" : re < 4000 ? "transitional" : "turbulent") << "), friction factor "
+                << (r.tubeFriction == TubeFriction::SmoothPipe ? friction::churchill(std::max(re, 1e-12))
+                                                               : 64 / std::max(re, 1e-12))
+                << (r.tubeFriction == TubeFriction::SmoothPipe ? " (smooth pipe)" : " (laminar, 64/Re)")
+                << ", minor losses K = " << r.minorLoss << "\n";
+            if (re > 2000 && r.tubeFriction == TubeFriction::Laminar)
+                out << "note: the tube's Re is above 2000 but reservoir.tube_friction = \"laminar\": its loss is "
+                       "underestimated; tube_friction = \"smooth_pipe\" gives the turbulent friction\n";
+        }
         const auto& m0 = config.material(config.layers.front().material);
         if (i > closed::criticalGradient(m0.grainDensity, rho, m0.porosity) && !config.initial.rigidSkeleton)
             out << "note: the gradient exceeds the critical gradient: the bed will heave and fluidise\n";

@@ -33,6 +33,8 @@ enum class GateMode { Pressure, Flux, Closed };
 enum class SandOverflow { Carry, Stop };
 enum class ReservoirKind { ConstantHead, Lumped, OpenFoam };
 enum class CouplingKind { Explicit, Implicit };
+/// The lumped tube's wall friction: Hagen-Poiseuille only, or a smooth pipe in every regime.
+enum class TubeFriction { SmoothPipe, Laminar };
 
 struct GridConfig {
     int dimension = 1;                 ///< 1, 2 or 3 (only 1 is verified)
@@ -165,6 +167,7 @@ struct ReservoirConfig {
     double tubeDiameter = 0.0;         ///< m, U-tube inner diameter (Lumped; 0: no tube)
     double tubeLength = 0.0;           ///< m, U-tube length (Lumped)
     double minorLoss = 0.0;            ///< -, sum of minor-loss coefficients (Lumped)
+    TubeFriction tubeFriction = TubeFriction::SmoothPipe;  ///< wall friction of the tube (Lumped)
     std::string openfoamCase;          ///< path of the OpenFOAM case directory (OpenFoam)
     std::string gatePatch = "gate";    ///< OpenFOAM patch coupled to the gate
     std::string reservoirPatch = "reservoir";  ///< OpenFOAM patch carrying the reservoir level

@@ -71,7 +71,7 @@ constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
 constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
 constexpr const char* kReservoirKeys[] = {
     "model",       "head",       "head_rate",     "area",       "tube_diameter",
-    "tube_length", "minor_loss", "openfoam_case", "gate_patch", "reservoir_patch"};
+    "tube_length", "minor_loss", "tube_friction", "openfoam_case", "gate_patch", "reservoir_patch"};
 constexpr const char* kCouplingKeys[] = {"scheme", "window", "tolerance", "max_iterations",
                                          "relaxation"};
 constexpr const char* kTimeKeys[] = {
@@ -132,6 +132,8 @@ const Options<GateMode> kGateOptions = {
     {"pressure", GateMode::Pressure}, {"flux", GateMode::Flux}, {"closed", GateMode::Closed}};
 const Options<SandOverflow> kSandOverflowOptions = {{"carry", SandOverflow::Carry},
                                                     {"stop", SandOverflow::Stop}};
+const Options<TubeFriction> kTubeFrictionOptions = {{"smooth_pipe", TubeFriction::SmoothPipe},
+                                                    {"laminar", TubeFriction::Laminar}};
 const Options<CouplingKind> kCouplingOptions = {{"explicit", CouplingKind::Explicit},
                                                    {"implicit", CouplingKind::Implicit}};
 const Options<ReservoirKind> kReservoirOptions = {{"constant_head", ReservoirKind::ConstantHead},
@@ -522,7 +524,7 @@ private:
         };
         switch (r.kind) {
             case ReservoirKind::ConstantHead:
-                for (const char* key : {"area", "tube_diameter", "tube_length", "minor_loss",
+                for (const char* key : {"area", "tube_diameter", "tube_length", "minor_loss", "tube_friction",
                                         "openfoam_case", "gate_patch", "reservoir_patch"})
                     s.forbid(key, notHere);
                 readHead();
@@ -541,6 +543,7 @@ private:
                         s.requiredNumber("tube_length", positive("m"),
                                          "length of the U-tube, required with tube_diameter > 0");
                     r.minorLoss = s.optionalNumber("minor_loss", 0.0, nonNegative(""));
+                    r.tubeFriction = s.choice("tube_friction", TubeFriction::SmoothPipe, kTubeFrictionOptions);
                 } else {
                     s.forbid(
                         "tube_length",
@@ -548,10 +551,12 @@ private:
                     s.forbid("minor_loss",
                              "minor losses act in the tube and there is none "
                              "(tube_diameter = 0; give tube_diameter > 0 for one)");
+                    s.forbid("tube_friction",
+                             "there is no tube (tube_diameter = 0; give tube_diameter > 0 for one)");
                 }
                 break;
             case ReservoirKind::OpenFoam: {
-                for (const char* key : {"head_rate", "tube_diameter", "tube_length", "minor_loss"})
+                for (const char* key : {"head_rate", "tube_diameter", "tube_length", "minor_loss", "tube_friction"})
                     s.forbid(key, notHere + " (the OpenFOAM case holds the tube)");
                 readHead();
                 r.area = s.requiredNumber("area", positive("m2"),

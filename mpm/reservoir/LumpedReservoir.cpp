@@ -3,6 +3,7 @@
 #include "core/Constants.hpp"
 #include "core/Error.hpp"
 #include "physics/ClosedForms.hpp"
+#include "physics/PipeFriction.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -36,6 +37,7 @@ GateLaw LumpedReservoir::gateLaw(double /*t*/) const {
     GateLaw law;
     law.staticPressure = rhoG * head_;
     law.resistance = rhoG * tubeResistance_;
+    if (p_.smoothPipeFriction) law.resistance *= friction::frictionMultiplier(tubeReynolds());
     if (p_.minorLoss > 0.0)
         law.resistance += p_.minorLoss * p_.liquidDensity * std::abs(lastFlux_) /
                           (2.0 * tubeArea_ * tubeArea_);
@@ -48,12 +50,13 @@ void LumpedReservoir::advance(double t, double dt, double gateFlux) {
     head_ -= gateFlux * dt / p_.area;
     lastFlux_ = gateFlux;
     meanFlux_ += (std::abs(gateFlux) - meanFlux_) * std::min(1.0, dt / kReynoldsAveraging);
-    if (!reynoldsWarned_ && meanTubeReynolds() > kLaminarReynoldsLimit) {
+    if (!p_.smoothPipeFriction && !reynoldsWarned_ && meanTubeReynolds() > kLaminarReynoldsLimit) {
         reynoldsWarned_ = true;
         std::cerr << "warning: lumped reservoir: at t = " << t + dt << " s the tube Reynolds number (mean over "
                   << kReynoldsAveraging << " s) is " << meanTubeReynolds() << ", above " << kLaminarReynoldsLimit
-                  << "; the laminar Hagen-Poiseuille tube loss underestimates the real loss "
-                     "(use a wider tube or an OpenFOAM reservoir)\n";
+                  << "; the laminar Hagen-Poiseuille tube loss (reservoir.tube_friction = \"laminar\") "
+                     "underestimates the real loss: use tube_friction = \"smooth_pipe\" (turbulent friction), "
+                     "a wider tube or an OpenFOAM reservoir\n";
     }
 }
 

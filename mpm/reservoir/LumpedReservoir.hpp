@@ -2,12 +2,18 @@
 // LumpedReservoir: the upstream reservoir and its U-tube as one ODE (physics.md section 3).
 //
 //   A_r dh/dt = -Q                                   (level balance, h above the gate plane)
-//   p_gate = rho g h - rho g R_t Q - K rho/2 (Q/A_t)^2 (static head, Hagen-Poiseuille, minor losses)
+//   p_gate = rho g h - phi(Re) rho g R_t Q - K rho/2 (Q/A_t)^2
+//            (static head, wall friction, minor losses: a valve, bends, the exit's kinetic energy)
 //
+// R_t is Hagen-Poiseuille's resistance; phi(Re) = f Re / 64 carries it into turbulent flow with
+// a smooth pipe's friction factor f (Churchill's all-regime law, physics/PipeFriction.hpp: 1 in
+// laminar flow, Colebrook's f in turbulent), so the loss is f (L/d) rho U^2 / 2 in every regime.
+// tube_friction = "laminar" keeps phi = 1 (Hagen-Poiseuille alone, as before 2026-12-04).
 // The gate law hands the solver the slope -dp/dQ so it can treat the tube loss implicitly in the
-// gate node update; lagged, the loss is unstable for realistic tubes. The minor loss is quadratic,
-// so it enters as a secant slope about the last flux, K rho |Q_last| / (2 A_t^2).
-// Hagen-Poiseuille assumes laminar flow: tubeReynolds() reports it, and advance() warns once on
+// gate node update; lagged, the loss is unstable for realistic tubes. The turbulent friction and
+// the minor loss are quadratic, so they enter as secant slopes about the last flux:
+// phi(Re_last) rho g R_t and K rho |Q_last| / (2 A_t^2).
+// With laminar friction tubeReynolds() reports the regime, and advance() warns once on
 // std::cerr when its mean over the last half second (meanTubeReynolds) exceeds 2000. The mean,
 // not the step's flux: when the valve opens, the compressible chamber takes in water for a few
 // steps at several times the flow the tube's water column could carry (the lumped tube has no
@@ -25,6 +31,8 @@ struct LumpedReservoirParameters {
     double tubeDiameter = 0.0;     ///< m (0: no tube, no losses)
     double tubeLength = 0.0;       ///< m
     double minorLoss = 0.0;        ///< -, sum of minor-loss coefficients K (needs a tube)
+    /// the tube's wall friction: a smooth pipe in every regime (Churchill), else Hagen-Poiseuille
+    bool smoothPipeFriction = false;
 };
 
 class LumpedReservoir final : public ReservoirModel {

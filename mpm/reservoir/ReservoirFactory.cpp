@@ -26,6 +26,7 @@ std::unique_ptr<ReservoirModel> makeReservoirModel(const CaseConfig& config) {
             p.tubeDiameter = r.tubeDiameter;
             p.tubeLength = r.tubeLength;
             p.minorLoss = r.minorLoss;
+            p.smoothPipeFriction = r.tubeFriction == TubeFriction::SmoothPipe;
             return std::make_unique<LumpedReservoir>(p);
         }
         case ReservoirKind::OpenFoam:
