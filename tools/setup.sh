@@ -4,7 +4,8 @@
 #   bash tools/setup.sh              compiler, CMake, Eigen, HDF5, toml++, GoogleTest/Mock,
 #                                    Google Benchmark, Python plotting
 #   bash tools/setup.sh --fuzz       the same plus clang with libFuzzer and OpenMP (tests/fuzz)
-#   bash tools/setup.sh --openfoam   the same plus Debian's `openfoam` package (OpenFOAM reservoir)
+#   bash tools/setup.sh --openfoam   the same plus Debian's `openfoam` package (OpenFOAM reservoir),
+#                                    its tutorials (`openfoam-examples`)
 #                                    and its headers: the source package of the installed version,
 #                                    fetched once into ~/.cache/quicksand/openfoam-src (or
 #                                    $QUICKSAND_CACHE_DIR/openfoam-src) without touching apt's config
@@ -30,7 +31,9 @@ for arg in "$@"; do
 done
 # the OpenFOAM headers come from the source package, checked with the Debian archive keyring:
 # its .orig tarball is .tar.bz2 (tar runs bzip2), the Debian part .tar.xz (xz-utils)
-if $with_openfoam; then packages+=(openfoam bzip2 xz-utils debian-archive-keyring); fi
+# openfoam-examples: OpenFOAM's own tutorials; a stock pimpleFoam tutorial is coupled as the feed
+# line in the tests (tests/openfoam/test_UserCases.cpp) and the docs' walkthrough
+if $with_openfoam; then packages+=(openfoam openfoam-examples bzip2 xz-utils debian-archive-keyring); fi
 
 is_installed() {
     [[ "$(dpkg-query -W -f='${Status}' "$1" 2>/dev/null || true)" == "install ok installed" ]]
