@@ -78,4 +78,38 @@ void requireSupportedCase(const std::string& directory) {
     }
 }
 
+std::vector<std::string> describeCase(const std::string& directory, double liquidViscosity, double liquidDensity) {
+    const fs::path dir(directory);
+    std::vector<std::string> lines;
+    const std::string turbulence = dictionaryText(dir / "constant/turbulenceProperties");
+    const std::string type = keywordValue(turbulence, "simulationType");
+    std::string model = type;
+    if (type == "RAS" || type == "LES") {
+        const std::string name = keywordValue(turbulence, type + "Model");
+        model += " " + (name.empty() ? std::string("(no ") + type + "Model given)" : name);
+    }
+    lines.push_back("turbulence (constant/turbulenceProperties): " + (model.empty() ? "not given" : model));
+    const std::string transport = dictionaryText(dir / "constant/transportProperties");
+    const std::string transportModel = keywordValue(transport, "transportModel");
+    // nu as "nu 1e-06;" or with dimensions "nu [0 2 -1 0 0 0 0] 1e-06;"
+    std::smatch m;
+    double nu = 0;
+    if (std::regex_search(transport, m, std::regex(R"((^|[\s;{}])nu\s+(\[[^\]]*\]\s*)?([-+0-9.eE]+)\s*;)")))
+        nu = std::stod(m[3]);
+    std::ostringstream t;
+    t << "transport (constant/transportProperties): " << (transportModel.empty() ? "?" : transportModel);
+    if (nu > 0) t << ", nu = " << nu << " m2/s";
+    lines.push_back(t.str());
+    const double water = liquidViscosity / liquidDensity;
+    if (nu > 0 && transportModel == "Newtonian" && std::abs(nu / water - 1) > 0.01) {
+        std::ostringstream n;
+        n << "note: the OpenFOAM case's nu = " << nu << " m2/s is not the column's water, liquid.viscosity / "
+          << "liquid.density = " << water << " m2/s: the line carries another fluid";
+        lines.push_back(n.str());
+    }
+    for (const char* where : {"constant/fvOptions", "system/fvOptions"})
+        if (fs::exists(dir / where)) lines.push_back(std::string("fvOptions: ") + where);
+    return lines;
+}
+
 }  // namespace qs::foam

@@ -5,11 +5,17 @@
 // that says so and what is supported, instead of OpenFOAM's message about a missing keyword.
 // No OpenFOAM header: the checks read the case's files as text.
 #include <string>
+#include <vector>
 
 namespace qs::foam {
 
 /// Throws qs::Error naming the case's file and what quicksand supports when the case at
 /// `directory` is not an incompressible single-phase case pimpleFoam could run.
 void requireSupportedCase(const std::string& directory);
+
+/// What the case's dictionaries select, read as text: lines for `quicksand check` (turbulence,
+/// viscosity, fvOptions), with a note where the case's nu is not the column's water
+/// (liquidViscosity / liquidDensity, Pa s and kg/m3).
+std::vector<std::string> describeCase(const std::string& directory, double liquidViscosity, double liquidDensity);
 
 }  // namespace qs::foam

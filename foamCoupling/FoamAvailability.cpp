@@ -1,6 +1,7 @@
 #include "FoamAvailability.hpp"
 
 #ifdef QUICKSAND_WITH_OPENFOAM
+#include "FeedLineCase.hpp"
 #include "FoamReservoir.hpp"
 #endif
 
@@ -11,6 +12,10 @@ bool available() { return true; }
 void registerFoamCoupling() {
     registerOpenFoamModel(
         [](const CaseConfig& c, bool resume) { return std::make_unique<FoamReservoir>(c, resume); });
+    registerOpenFoamCaseCheck([](const CaseConfig& c) {
+        requireSupportedCase(c.reservoir.openfoamCase);
+        return describeCase(c.reservoir.openfoamCase, c.liquid.viscosity, c.liquid.density);
+    });
 }
 #else
 bool available() { return false; }

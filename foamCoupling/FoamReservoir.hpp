@@ -44,7 +44,7 @@ public:
 
     const std::string& workDirectory() const { return workDir_; }
     /// One line: the algorithm and models OpenFOAM selected from the case.
-    std::string description() const;
+    std::string description() const override;
 
 private:
     /// Opens the working copy with OpenFOAM, at the case's own start or (a resume) at startTime.

@@ -7,6 +7,7 @@
 #include <string>
 
 #include "core/Constants.hpp"
+#include "coupling/WindowedModel.hpp"
 #include "physics/ClosedForms.hpp"
 #include "physics/PipeFriction.hpp"
 #include "physics/Permeability.hpp"
@@ -182,6 +183,7 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
             << config.reservoir.head << " m, area " << config.reservoir.area << " m2\n";
         out << "coupling: " << (config.coupling.scheme == CouplingKind::Implicit ? "implicit (Aitken)" : "explicit")
             << ", window " << config.coupling.window << " s = " << steps << " MPM steps\n";
+        for (const auto& line : checkOpenFoamCase(config)) out << "  " << line << "\n";
         CaseConfig withoutTube = config;  // the column alone: an upper bound of the flux
         withoutTube.reservoir.kind = ReservoirKind::ConstantHead;
         const double q = expectedSteadyFilterVelocity(withoutTube);

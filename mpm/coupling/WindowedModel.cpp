@@ -13,6 +13,20 @@ WindowedModelFactory& openFoamFactory() {
 
 void registerOpenFoamModel(WindowedModelFactory factory) { openFoamFactory() = std::move(factory); }
 
+namespace {
+OpenFoamCaseCheck& openFoamCaseCheck() {
+    static OpenFoamCaseCheck check;
+    return check;
+}
+}  // namespace
+
+void registerOpenFoamCaseCheck(OpenFoamCaseCheck check) { openFoamCaseCheck() = std::move(check); }
+
+std::vector<std::string> checkOpenFoamCase(const CaseConfig& config) {
+    if (!openFoamCaseCheck()) return {};
+    return openFoamCaseCheck()(config);
+}
+
 std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config, bool resume) {
     if (!openFoamFactory())
         throw Error(

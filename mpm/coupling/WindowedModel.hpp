@@ -35,6 +35,8 @@ public:
     virtual void restoreState(const std::vector<double>& state) = 0;
     /// Called at output times; a CFD model writes its fields here.
     virtual void writeOutput(double /*t*/) {}
+    /// One line on what the model runs (for the run's first line and coupling.log).
+    virtual std::string description() const { return ""; }
 };
 
 /// foamCoupling/ registers the OpenFOAM model here at start-up (mpm/ never depends on it).
@@ -45,5 +47,12 @@ void registerOpenFoamModel(WindowedModelFactory factory);
 /// The model of reservoir.model = "openfoam"; throws qs::Error naming the key when this build
 /// has no OpenFOAM.
 std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config, bool resume = false);
+
+/// `quicksand check` of an OpenFOAM reservoir: foamCoupling/ registers a checker that refuses a
+/// case quicksand cannot run (throws qs::Error) and describes the one it can, a line each.
+using OpenFoamCaseCheck = std::function<std::vector<std::string>(const CaseConfig&)>;
+void registerOpenFoamCaseCheck(OpenFoamCaseCheck check);
+/// The registered checker's lines; none where this build has no OpenFOAM.
+std::vector<std::string> checkOpenFoamCase(const CaseConfig& config);
 
 }  // namespace qs

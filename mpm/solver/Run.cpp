@@ -285,6 +285,11 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
                     D, solver.dt(), solver.waveSpeed(), solver.solid().size(),
                     solver.liquid().size(), solver.time(), end,
                     windowed ? (", coupled to " + model->name()).c_str() : "");
+    if (!options.quiet && windowed && !model->description().empty())
+        std::printf("quicksand: %s: %s\n", model->name().c_str(), model->description().c_str());
+    if (couplingLog.is_open() && windowed)
+        couplingLog << "# " << model->name() << (model->description().empty() ? "" : ": " + model->description())
+                    << (options.resume ? " (resumed)" : "") << "\n";
     // Ctrl-C or SIGTERM: the step (or coupling window) in progress ends, a checkpoint is
     // written, and the run stops saying how to resume (solver/Interruption.hpp)
     InterruptionGuard interruption;
