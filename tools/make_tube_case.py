@@ -211,8 +211,7 @@ def main():
         else:
             at = [a.length * (i + 1) / (a.bends + 1) for i in range(a.bends)]
         losses += [("bend%d" % (i + 1), a.bend_k, x) for i, x in enumerate(at)]
-    shutil.copytree(a.template, a.out, ignore=shutil.ignore_patterns("polyMesh", "[1-9]*", "0.*"))
-    path = a.out + "/system/blockMeshDict"
+    path = a.template + "/system/blockMeshDict"   # checked and changed before OUT is made
     text = open(path).read()
     # outer vertices at the radius whose flat-sided 5-degree wedge has exactly pi r^2 / 72 of
     # cross-section (0.5 Rv^2 sin(5 deg) = pi r^2 / 72), so that a flux Q maps to Q / (pi d^2 / 4)
@@ -240,13 +239,14 @@ def main():
         dx = a.length / n_axial
         at_face = {}   # cell face index -> (name, K)
         for name, k, x in sorted(losses, key=lambda t: t[2]):
-            i = int(round(x / dx))
-            if not 0 <= x <= a.length or not 1 <= i <= n_axial - 1:
-                fail("the %s baffle at x = %g m is not inside the pipe (a cell from either end; "
-                     "cells of %.4g m)" % (name, x, dx))
+            if not 0 <= x <= a.length:
+                fail("the %s at x = %g m is outside the pipe (0 .. %g m)" % (name, x, a.length))
+            # the nearest interior cell face (a cell at least between the baffle and either end)
+            i = min(max(int(round(x / dx)), 1), n_axial - 1)
             if i in at_face:
-                fail("the %s and %s baffles fall on the same cell face (x = %.6g m)"
-                     % (at_face[i][0], name, i * dx))
+                fail("the %s and the %s fall on the same cell face (x = %.6g m, cells of %.4g m): "
+                     "move one (--valve-at, --bend-at) or give more axial cells"
+                     % (at_face[i][0], name, i * dx, dx))
             at_face[i] = (name, k)
         stations = [0] + sorted(at_face) + [n_axial]
         baffles = {s: at_face[i][0] for s, i in enumerate(stations) if i in at_face}
@@ -265,6 +265,9 @@ def main():
         head += ["x%-3d %.12g;" % (k, s * dx) for k, s in enumerate(stations)]
         head += ["rEqualArea (%s);" % grading, ""]
         text = text[:start] + "\n".join(head) + "\n" + blocks_text(stations, baffles) + text[end:]
+    shutil.copytree(a.template, a.out, ignore=shutil.ignore_patterns("polyMesh", "[1-9]*", "0.*"))
+    open(a.out + "/system/blockMeshDict", "w").write(text)
+    if losses:
         # the fields: p jumps, everything else is plain cyclic
         for field in sorted(os.listdir(a.out + "/0")):
             fpath = a.out + "/0/" + field
@@ -277,11 +280,12 @@ def main():
                                   "    %s_half1\n    {\n        type            cyclic;\n    }\n"
                                   % (name, name) for name, _ in at_face.values())
             add_patch_entries(fpath, entries)
+        if not os.path.isfile(a.out + "/0/p"):
+            fail("%s has no 0/p for the baffles' pressure jumps" % a.template)
         for i, (name, k) in sorted(at_face.items()):
             print("%s: %s baffle at x = %.6g m, K = %g" % (a.out, name, i * dx, k))
         print("%s: minor losses sum K = %g (%d baffle%s; dp = sum K rho U^2 / 2)"
               % (a.out, sum(k for _, k in at_face.values()), len(at_face), "s" * (len(at_face) > 1)))
-    open(path, "w").write(text)
     nu, g = 8.93e-7, 9.81
     rt = 128 * nu * a.length / (math.pi * g * a.diameter ** 4)
     print("%s: d = %g m, L = %g m, Hagen-Poiseuille R_t = %.4g s/m2, inertial time d^2/(32 nu) = %.3g s"
