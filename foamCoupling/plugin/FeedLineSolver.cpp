@@ -4,8 +4,9 @@
 // Everything physical comes from OpenFOAM's libraries through its run-time selection, as under
 // pimpleFoam: the viscosity model (constant/transportProperties), the turbulence model, laminar,
 // RAS or LES (constant/turbulenceProperties), MRF zones, fvOptions (constant/ or system/), every
-// boundary condition (a valve as a porousBafflePressure baffle) and the controlDict's function objects (probes, surfaceFieldValue,
-// fieldAverage, ... writing to the case's postProcessing/). What quicksand adds is the coupling:
+// boundary condition (a valve as a porousBafflePressure baffle) and the controlDict's function
+// objects (probes, surfaceFieldValue, fieldAverage, ... writing to the case's postProcessing/).
+// What quicksand adds is the coupling:
 //   - the gate patch's velocity, the window's flux spread over the profile arriving at the gate
 //     (GateProfile.H);
 //   - the reservoir patch's pressure, from the reservoir's level;
