@@ -5,7 +5,8 @@
                      [--axial N] [--radial N]
                      [--valve-k K [--valve-at X]] [--bends N [--bend-k KB] [--bend-at X1,X2,..]]
 
-TEMPLATE is an OpenFOAM tube case such as cases/deltaresColumn/reservoir (patches reservoir,
+TEMPLATE is an OpenFOAM tube case such as tools/tube_template (k-omega SST) or
+cases/verification/openfoam_utube/reservoir (laminar), one block with patches reservoir,
 gate, wall, front, back, axis); OUT gets a copy with the pipe's diameter (m), developed length (m)
 and cell counts changed in system/blockMeshDict (a 5-degree wedge, axis along x, x = 0 at the
 reservoir patch). The tube's Hagen-Poiseuille resistance and inertial time are printed.
@@ -213,6 +214,9 @@ def main():
         losses += [("bend%d" % (i + 1), a.bend_k, x) for i, x in enumerate(at)]
     path = a.template + "/system/blockMeshDict"   # checked and changed before OUT is made
     text = open(path).read()
+    if re.search(r"^x1\s", text, flags=re.M):
+        fail("%s already has loss baffles (a case made by this script); start from a single-block "
+             "template such as tools/tube_template" % path)
     # outer vertices at the radius whose flat-sided 5-degree wedge has exactly pi r^2 / 72 of
     # cross-section (0.5 Rv^2 sin(5 deg) = pi r^2 / 72), so that a flux Q maps to Q / (pi d^2 / 4)
     r = a.diameter / 2
