@@ -71,6 +71,12 @@ FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume)
     requireSupportedCase(caseName_);
 
     const fs::path out = fs::path(config.caseDirectory) / config.output.directory;
+    {  // the working copy goes into the output: an output inside the OpenFOAM case would copy itself
+        const std::string o = fs::weakly_canonical(out).string() + "/", c = fs::weakly_canonical(source).string() + "/";
+        QS_CHECK(o.rfind(c, 0) != 0, "case.toml: key 'reservoir.openfoam_case': the OpenFOAM case "
+                                         << source.string() << " holds the run's output directory " << out.string()
+                                         << "; give the OpenFOAM case its own folder beside case.toml");
+    }
     fs::create_directories(out);
     const fs::path work = out / "openfoam";
     if (!resume || !fs::exists(work / "system/controlDict")) {

@@ -34,7 +34,7 @@ fs::path makeTube(const std::string& tag, const std::string& options) {
     fs::remove_all(dir);
     fs::create_directories(dir.parent_path());
     const std::string cmd = "/usr/bin/python3 " + std::string(QUICKSAND_SOURCE_DIR) + "/tools/make_tube_case.py " +
-                            QUICKSAND_SOURCE_DIR + "/cases/deltaresColumn/reservoir '" + dir.string() +
+                            QUICKSAND_SOURCE_DIR + "/cases/verification/openfoam_utube/reservoir '" + dir.string() +
                             "' --diameter 0.01 --length 0.5 --axial 100 --radial 8 " + options + " > /dev/null";
     EXPECT_EQ(std::system(cmd.c_str()), 0) << cmd;
     return dir;
