@@ -19,7 +19,7 @@
 #include <vector>
 
 #include "OpenFoamTestSupport.hpp"
-#include "FoamReservoir.hpp"
+#include "coupling/WindowedModel.hpp"
 #include "solver/Run.hpp"
 
 using namespace qs;
@@ -120,7 +120,9 @@ TEST(UserCases, ARepeatedWindowRestoresEveryFieldDigitForDigit) {
     writeColumnCase(dir, "line", "outlet", "inlet", 0.1);
     CaseConfig c = loadCase(dir.string());
     c.reservoir.area = 1e3;  // the level hardly moves
-    foam::FoamReservoir line(c, false);
+    const auto model = makeOpenFoamModel(c, false);  // the OpenFOAM reservoir, through its seam
+    WindowedModel& line = *model;
+    const fs::path work = fs::path(c.caseDirectory) / c.output.directory / "openfoam";
     const double dt = 1e-3, Q = 5e-6;
     double t = 0;
     for (int k = 0; k < 20; ++k, t += dt) {  // a developing flow: k and epsilon far from uniform
@@ -131,7 +133,7 @@ TEST(UserCases, ARepeatedWindowRestoresEveryFieldDigitForDigit) {
         line.writeOutput(t + dt);
         fs::path latest;
         double newest = -1;
-        for (const auto& e : fs::directory_iterator(line.workDirectory())) {
+        for (const auto& e : fs::directory_iterator(work)) {
             if (!e.is_directory()) continue;
             try {
                 const double v = std::stod(e.path().filename().string());
