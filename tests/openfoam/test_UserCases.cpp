@@ -207,3 +207,42 @@ TEST(UserCases, AUserCaseWithRenamedPatchesProbesAndRASRunsCoupled) {
                 s.final.gateFlux, s.final.gatePressure, p, rows, s.coupling.windows, s.coupling.modelSolves,
                 s.couplingSummary.c_str());
 }
+
+TEST(UserCases, AFastLaminarLineKeepsItsGateStable) {
+    QS_REQUIRE_OPENFOAM();
+    // Issue 21's failure: the main job with a 10 mm x 2 m laminar line (no valve) stopped at
+    // t = 2.53 s, the first coupling iteration returning an MPM flux 4.6 times the line's. At
+    // 0.54 m/s (Re 6100) the entry length, 0.05 Re d ~ 3 m, exceeds the 2 m line: the flow
+    // arriving at the gate is no parabola, and the parabola the gate imposed kept the water
+    // flowing back along the axis (-0.5 m/s over its last 4 cells) and radially in the wedge's
+    // axis cell, where OpenFOAM's explicit swirl term grows round-off swirl once
+    // dt U_r / r_c > 2: 1e-13 m/s at the start, 0.15 at 2.47 s, then x -2 ... -729 a window,
+    // until the axis face's pressure read -3796 m2/s2. The gate now takes the profile of the flow
+    // arriving there (GateProfile.H); forced back to the parabola, this run fails at 2.17 s.
+    const fs::path dir = fs::path(QUICKSAND_BINARY_DIR) / "openfoam-tests/user-fast-laminar";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const std::string make = "/usr/bin/python3 " + std::string(QUICKSAND_SOURCE_DIR) + "/tools/make_tube_case.py " +
+                             QUICKSAND_SOURCE_DIR + "/cases/verification/openfoam_utube/reservoir '" +
+                             (dir / "line").string() + "' --diameter 0.010 --length 2.0 --axial 112 --radial 8 > /dev/null";
+    ASSERT_EQ(std::system(make.c_str()), 0) << make;
+    std::string text = readFile(fs::path(QUICKSAND_SOURCE_DIR) / "cases/deltaresColumn/case.toml");
+    auto replace = [&](const std::string& from, const std::string& to) {
+        const auto at = text.find(from);
+        ASSERT_NE(at, std::string::npos) << from;
+        text.replace(at, from.size(), to);
+    };
+    replace("openfoam_case = \"reservoir\"", "openfoam_case = \"line\"");
+    std::ofstream(dir / "case.toml") << text;
+    CaseConfig c = loadCase(dir.string());
+    c.time.end = 4.0;
+    c.time.checkpointInterval = 0;
+    RunOptions o;
+    o.quiet = true;
+    const RunSummary s = runCase(c, o);  // threw "numerical failure" at 2.17-2.53 s before
+    EXPECT_NEAR(s.final.time, 4.0, 1e-3);
+    EXPECT_EQ(s.coupling.unconverged, 0);
+    EXPECT_GT(s.final.gateFlux, 3e-5);  // the fast line: about 4.3e-5 m3/s by then
+    std::printf("fast laminar line (10 mm x 2 m, no valve): t = %.3g s, gate flux %.4g m3/s; %s\n", s.final.time,
+                s.final.gateFlux, s.couplingSummary.c_str());
+}
