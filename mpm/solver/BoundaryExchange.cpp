@@ -51,6 +51,7 @@ void DoublePointSolver<D>::carrySandOut(Real zOver) {
                   << " m): the water carries sand out of the column, counted in series.csv's "
                      "cumulative_solid_outflow (column.sand_overflow = \"stop\" stops the run instead)\n";
     solidOutflowMass_ += mass;
+    solid_.stressReturn.resize(solid_.size());  // per-step scratch, not a point field: kept in step
     warnedSandOut_ = true;  // once a run: not part of the state, so a repeated window keeps it
     sortByCell(solid_, solidCellStart_, counts_);
 }

@@ -173,6 +173,9 @@ private:
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_,
         velLIncrement_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
+    /// kg, sum over the solid points reaching a node of m_p (h |grad N_ip|)^2: the solid mass the
+    /// node's points' skeletons would need at C = 1 (GridToPoints.cpp, starved nodes)
+    std::vector<Real> stiffnessMass_;
     std::vector<char> diffusionNode_;  ///< nodes where the front diffusion acts
     bool anyDiffusion_ = false;        ///< whether any node is one
     std::vector<Real> pressureGradient_;  ///< Pa/m, [node][axis]

@@ -201,7 +201,7 @@ Real DoublePointSolver<D>::waterVolumeAt(Index node) const {
 
 template <int D>
 void DoublePointSolver<D>::pointsToGrid() {
-    for (auto* a : {&massS_, &massL_, &solidVolume_, &dragA_, &dragB_})
+    for (auto* a : {&massS_, &massL_, &solidVolume_, &dragA_, &dragB_, &stiffnessMass_})
         std::fill(a->begin(), a->end(), 0.0);
     for (auto* a : {&momS_, &momL_, &forceS_, &forceL_}) std::fill(a->begin(), a->end(), 0.0);
 
@@ -254,6 +254,7 @@ void DoublePointSolver<D>::pointsToGrid() {
             Real* const dragB = dragB_.data();
             Real* const mom = momS_.data();
             Real* const force = forceS_.data();
+            Real* const stiffness = stiffnessMass_.data();
             const LinearStencil<D> st = linearStencil(grid_, &solid_.x[p * D]);
             const SolidShares t = sharesOf(p);
             const Real* C = &solid_.velocityGradient[p * D * D];
@@ -296,11 +297,14 @@ void DoublePointSolver<D>::pointsToGrid() {
 #pragma GCC unroll 8
             for (int k = 0; k < LinearStencil<D>::kNodes; ++k) {
                 const Index i = st.node[k];
+                Real slope2 = 0;
                 for (int d = 0; d < D; ++d) {
                     Real f = 0;
                     for (int e = 0; e < D; ++e) f += t.stressV[d][e] * st.grad[k][e];
                     force[i * D + d] += keep[k] * f;
+                    slope2 += st.grad[k][d] * st.grad[k][d];
                 }
+                stiffness[i] += keep[k] * t.m * h * h * slope2;
                 if (axisymmetric) force[i * D] -= t.hoop * N[k];
             }
         });
@@ -333,8 +337,10 @@ void DoublePointSolver<D>::pointsToGrid() {
                 solidVolume_[i] += N * t.grains;
                 dragA_[i] += N * t.dragA;
                 dragB_[i] += N * t.dragB;
-                Real dx[D];
+                Real dx[D], slope2 = 0;
                 for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(first[e] + offset[e]) - centre[e];
+                for (int e = 0; e < D; ++e) slope2 += gradN[e] * gradN[e];
+                stiffnessMass_[i] += t.m * grid_.h() * grid_.h() * slope2;
                 for (int d = 0; d < D; ++d) {
                     Real vi = v[d];
                     for (int e = 0; e < D; ++e) vi += C[d * D + e] * dx[e];

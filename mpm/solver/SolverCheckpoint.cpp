@@ -143,6 +143,7 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     // the solid's velocity gradient (APIC, field 9) came on 2026-12-02: an older checkpoint's
     // points start with C = 0, a PIC transfer for their first step
     getSet(data, "solid", solid_, D, SolidPoints<D>::kVelocityGradientField);
+    solid_.stressReturn.assign(solid_.size(), 0);  // per-step scratch, one per point of the checkpoint
     getSet(data, "liquid", liquid_, D);
     requireCodes(solid_.state, 2, "solid state");
     requireCodes(solid_.material, static_cast<int>(materials_.size()), "material");
