@@ -38,11 +38,15 @@ void DoublePointSolver<D>::gridToPoints() {
     // has just crossed away from holds only the tail of its hat: a sliver of solid mass, N m_p. The
     // point's stress still pushes on it with the full slope 1/h, so its velocity is that force over
     // the sliver, and the point's strain took that velocity with the full slope too: the explicit
-    // update of a vanishing mass. The skeletons of the points that reach node i give it the
-    // frequency omega_i^2 <~ sum_p E_oed,p V_p |grad N_ip|^2 / m_i, within the step's limit
-    // omega dt <= 2 while m_i >= (C^2 / 4) S_i, S_i = sum_p m_p (h |grad N_ip|)^2 (stiffnessMass_,
-    // PointsToGrid.cpp), because every skeleton's wave speed is below c_fast, the step's
-    // (C = dt c_fast / h). Below twice that mass, starvedShare S_i, a node's share of the
+    // update of a vanishing mass. S_i = sum_p m_p (h |grad N_ip|)^2 (stiffnessMass_,
+    // PointsToGrid.cpp) is a mass weighted by the points' slopes, not their stiffness; C = dt
+    // c_fast / h is the step's. Below starvedShare S_i = (C^2 / 2) S_i of solid mass a node's
+    // stress relaxes in one step (it keeps no inertia between steps), stable only while
+    // X = C_sk^2 (1 + 1/starvedShare) < 2, C_sk the skeleton's own Courant number: guaranteed for
+    // c_sk < 0.96 c_fast at C = 0.4 (0.94 at 0.5), not for every skeleton as first claimed, since
+    // v_p still holds the node's unscaled share (a review found this leak; the shipped cases have
+    // c_sk / c_fast ~ 0.2 to 0.27). In 2D and 3D a rigid rotation is no longer strain-free at a
+    // starved point (its spin in C is halved there). Below starvedShare S_i a node's share of the
     // velocity gradient, sum_i grad N_i (v_i - v_p), is scaled by m_i / (starvedShare S_i), as if
     // it held that mass: continuous in m_i (a hard cut moved the columns of a 2D bed apart), and
     // equal at a side wall, where m_i and S_i both halve. Inside the sand m_i / S_i is 0.4 to 0.5
