@@ -5,6 +5,8 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <string>
 
 #include "FoamAvailability.hpp"
@@ -31,6 +33,23 @@ inline std::filesystem::path freshCaseCopy(const std::string& relative, const st
     fs::copy(src, dst, fs::copy_options::recursive);
     fs::remove_all(dst / "output");
     return dst;
+}
+
+/// The whole text of a file ("" when it cannot be read).
+inline std::string readFile(const std::filesystem::path& file) {
+    std::ifstream in(file);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    return ss.str();
+}
+
+/// Replaces the first `from` in a file with `to`, as a user edits it; fails the test without one.
+inline void replaceInFile(const std::filesystem::path& file, const std::string& from, const std::string& to) {
+    std::string text = readFile(file);
+    const auto pos = text.find(from);
+    ASSERT_NE(pos, std::string::npos) << from << " not in " << file;
+    text.replace(pos, from.size(), to);
+    std::ofstream(file) << text;
 }
 
 }  // namespace qs::test

@@ -25,13 +25,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readFile(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 /// A 10 mm pipe from tools/make_tube_case.py with the given extra options, in the build tree.
 fs::path makeTube(const std::string& tag, const std::string& options) {
     const fs::path dir = fs::path(QUICKSAND_BINARY_DIR) / "openfoam-tests" / tag;

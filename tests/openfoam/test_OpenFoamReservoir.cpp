@@ -49,15 +49,6 @@ std::pair<int, std::string> runCommand(const fs::path& caseDir) {
     return {WIFEXITED(status) ? WEXITSTATUS(status) : -1, text};
 }
 
-void replaceInFile(const fs::path& file, const std::string& from, const std::string& to) {
-    std::ifstream in(file);
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const auto pos = text.find(from);
-    ASSERT_NE(pos, std::string::npos) << from << " not in " << file;
-    text.replace(pos, from.size(), to);
-    std::ofstream(file) << text;
-}
-
 }  // namespace
 
 TEST(OpenFoamReservoir, TubeGivesHagenPoiseuillePressureDrop) {

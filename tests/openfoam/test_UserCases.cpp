@@ -28,13 +28,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readFile(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
 /// Replaces the dictionary of `patch` in an OpenFOAM field file's boundaryField with `body`, as a
 /// user edits it (the block from the patch's name to its closing brace).
 void setPatch(const fs::path& file, const std::string& patch, const std::string& body) {

@@ -21,21 +21,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string readFile(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream ss;
-    ss << in.rdbuf();
-    return ss.str();
-}
-
-void replaceInFile(const fs::path& file, const std::string& from, const std::string& to) {
-    std::string text = readFile(file);
-    const auto pos = text.find(from);
-    ASSERT_NE(pos, std::string::npos) << from << " not in " << file;
-    text.replace(pos, from.size(), to);
-    std::ofstream(file) << text;
-}
-
 /// An OpenFOAM dictionary file with the header OpenFOAM expects and `body`.
 void writeDictionary(const fs::path& file, const std::string& cls, const std::string& body) {
     std::ofstream(file) << "FoamFile\n{\n    version 2.0;\n    format ascii;\n    class " << cls
