@@ -30,7 +30,16 @@ Real DoublePointSolver<D>::footprintShare(Index node, const std::optional<Horizo
 }
 
 template <int D>
+std::vector<Real> DoublePointSolver<D>::sandFeeding() const {
+    std::vector<Real> ratio(massS_.size(), -1.0);
+    for (std::size_t i = 0; i < ratio.size(); ++i)
+        if (slopeMass_[i] > 0) ratio[i] = massS_[i] / slopeMass_[i];
+    return ratio;
+}
+
+template <int D>
 ColumnState DoublePointSolver<D>::columnState() const {
+    const Real starved = starvedShare();
     ColumnState s;
     s.time = time_;
     s.gateFlux = gateFlux_;
@@ -44,13 +53,15 @@ ColumnState DoublePointSolver<D>::columnState() const {
         const Index row = monitorNodes_[m];
         const MonitorConfig& monitor = config_.monitors[m];
         // q = n (v_L - v_S) on the grid, averaged over the section's nodes by footprint (the
-        // part of each node's footprint inside the monitor's x and y ranges, if it has them)
+        // part of each node's footprint inside the monitor's x and y ranges, if it has them); a
+        // starved node's solid velocity counts with its fed weight (GridToPoints.cpp): at the sand's
+        // surface it is a force over a sliver of mass, and above it the flux is the water's
         Real q = 0, a = 0;
         for (Index i = 0; i < grid_.numNodes(); ++i) {
             if (grid_.nodeCoords(i)[D - 1] != row || massL_[i] <= 0) continue;
             const Real w = nodeFootprint(grid_, i) * footprintShare(i, monitor.x, monitor.y);
             if (w <= 0) continue;
-            q += w * porosity_[i] * (velL_[i * D + D - 1] - velS_[i * D + D - 1]);
+            q += w * porosity_[i] * (velL_[i * D + D - 1] - fedWeight(i, starved) * velS_[i * D + D - 1]);
             a += w;
         }
         s.monitorFlux.push_back(a > 0 ? q / a : 0.0);
@@ -118,6 +129,7 @@ void DoublePointSolver<D>::measureStates(ColumnState& s) const {
 
 template <int D>
 std::vector<CellRow> DoublePointSolver<D>::profile() const {
+    const Real starved = starvedShare();
     const Index rows = grid_.cells(D - 1);
     const Index perRow = grid_.numCells() / rows;
     std::vector<CellRow> out(rows);
@@ -161,7 +173,7 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         Real q = 0, a = 0;
         for (Index i = r * grid_.nodeStride(D - 1); i < (r + 1) * grid_.nodeStride(D - 1); ++i) {
             const Real wgt = nodeFootprint(grid_, i);
-            q += wgt * porosity_[i] * (velL_[i * D + D - 1] - velS_[i * D + D - 1]);
+            q += wgt * porosity_[i] * (velL_[i * D + D - 1] - fedWeight(i, starved) * velS_[i * D + D - 1]);
             a += wgt;
         }
         row.filterVelocity = a > 0 ? q / a : 0.0;
@@ -175,5 +187,8 @@ template ColumnState DoublePointSolver<3>::columnState() const;
 template std::vector<CellRow> DoublePointSolver<1>::profile() const;
 template std::vector<CellRow> DoublePointSolver<2>::profile() const;
 template std::vector<CellRow> DoublePointSolver<3>::profile() const;
+template std::vector<Real> DoublePointSolver<1>::sandFeeding() const;
+template std::vector<Real> DoublePointSolver<2>::sandFeeding() const;
+template std::vector<Real> DoublePointSolver<3>::sandFeeding() const;
 
 }  // namespace qs

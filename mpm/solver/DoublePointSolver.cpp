@@ -104,7 +104,7 @@ template <int D>
 void DoublePointSolver<D>::allocate() {
     const Index nn = grid_.numNodes(), nc = grid_.numCells();
     for (auto* a : {&massS_, &massL_, &solidVolume_, &nodeVolume_, &porosity_, &sandPorosity_, &dragA_, &dragB_,
-                    &drag_, &relSpeed_, &stiffnessMass_})
+                    &drag_, &relSpeed_, &slopeMass_})
         a->assign(nn, 0.0);
     diffusionNode_.assign(nn, 0);
     for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velLIncrement_,

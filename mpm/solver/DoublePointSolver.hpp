@@ -117,6 +117,13 @@ public:
     std::vector<CellRow> profile() const;
     /// Fastest wave speed used for the time step (m/s).
     Real waveSpeed() const { return waveSpeed_; }
+    /// The share of its slope mass below which a node is starved: C^2 / 2, C = dt c_fast / h
+    /// (GridToPoints.cpp)
+    Real starvedShare() const { const Real c = dt_ * waveSpeed_ / grid_.h(); return 0.5 * c * c; }
+    /// Each node's solid mass over its slope mass, m_i / S_i, from the last step's transfer; -1
+    /// at nodes no solid point reaches. For diagnostics and tests: a node is starved below
+    /// starvedShare(); inside the sand the ratio is 0.4 to 0.5 with linear hats.
+    std::vector<Real> sandFeeding() const;
 
     void saveState(CheckpointData& data) const;
     void loadState(const CheckpointData& data);
@@ -173,9 +180,14 @@ private:
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_,
         velLIncrement_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
-    /// kg, sum over the solid points reaching a node of m_p (h |grad N_ip|)^2: the solid mass the
-    /// node's points' skeletons would need at C = 1 (GridToPoints.cpp, starved nodes)
-    std::vector<Real> stiffnessMass_;
+    /// kg, sum over the solid points reaching a node of m_p (h |grad N_ip|)^2: the points' mass
+    /// weighted by the slopes of their hats there, the yardstick of a starved node (GridToPoints.cpp)
+    std::vector<Real> slopeMass_;
+    /// How far a node is fed with sand: m_i / (share S_i) for a starved node, else 1 (GridToPoints.cpp)
+    Real fedWeight(Index i, Real share) const {
+        const Real need = share * slopeMass_[i];
+        return massS_[i] < need ? massS_[i] / need : Real(1);
+    }
     std::vector<char> diffusionNode_;  ///< nodes where the front diffusion acts
     bool anyDiffusion_ = false;        ///< whether any node is one
     std::vector<Real> pressureGradient_;  ///< Pa/m, [node][axis]

@@ -38,42 +38,47 @@ void DoublePointSolver<D>::gridToPoints() {
     // has just crossed away from holds only the tail of its hat: a sliver of solid mass, N m_p. The
     // point's stress still pushes on it with the full slope 1/h, so its velocity is that force over
     // the sliver, and the point's strain took that velocity with the full slope too: the explicit
-    // update of a vanishing mass. S_i = sum_p m_p (h |grad N_ip|)^2 (stiffnessMass_,
-    // PointsToGrid.cpp) is a mass weighted by the points' slopes, not their stiffness; C = dt
-    // c_fast / h is the step's. Below starvedShare S_i = (C^2 / 2) S_i of solid mass a node's
-    // stress relaxes in one step (it keeps no inertia between steps), stable only while
-    // X = C_sk^2 (1 + 1/starvedShare) < 2, C_sk the skeleton's own Courant number: guaranteed for
-    // c_sk < 0.96 c_fast at C = 0.4 (0.94 at 0.5), not for every skeleton as first claimed, since
-    // v_p still holds the node's unscaled share (a review found this leak; the shipped cases have
-    // c_sk / c_fast ~ 0.2 to 0.27). In 2D and 3D a rigid rotation is no longer strain-free at a
-    // starved point (its spin in C is halved there). Below starvedShare S_i a node's share of the
-    // velocity gradient, sum_i grad N_i (v_i - v_p), is scaled by m_i / (starvedShare S_i), as if
-    // it held that mass: continuous in m_i (a hard cut moved the columns of a 2D bed apart), and
-    // equal at a side wall, where m_i and S_i both halve. Inside the sand m_i / S_i is 0.4 to 0.5
-    // (linear hats), and uGIMP's tails keep it above lp / h. The point's velocity, sum N_i v_i,
-    // is the nodes' momentum and stays as it is. (The Deltares column resettling at t = 51.88 s: a
-    // lone point 2.4e-8 cells past node row 10 read -563 m/s at the node above, a strain of -1.21
-    // in one step, a porosity of 3.98.)
-    const Real courant = dt * waveSpeed_ / grid_.h();
-    const Real starvedShare = 0.5 * courant * courant;
+    // update of a vanishing mass. S_i = sum_p m_p (h |grad N_ip|)^2 (slopeMass_, PointsToGrid.cpp)
+    // is the points' mass weighted by their slopes; C = dt c_fast / h is the step's. A node with
+    // less solid mass than starvedShare S_i = (C^2 / 2) S_i is starved: its share of the velocity
+    // gradient is taken with weight w_i = m_i / (starvedShare S_i), and the rest, 1 - w_i, with
+    // the velocity of the nodes that are fed, v_fed = sum N w v / sum N w, as if the node moved
+    // with the sand around it. The point's strain then never reads the sliver's velocity, whatever
+    // the skeleton's stiffness (a first version completed the share with the point's velocity,
+    // sum N_i v_i, which still holds the sliver: stable only for c_sk < 0.96 c_fast at C = 0.4).
+    // Continuous in m_i (a hard cut moved the columns of a 2D bed apart); equal at a side wall,
+    // where m_i and S_i both halve; a held component (a wall, the filter) is a boundary value, not
+    // a sliver, and keeps its weight. A uniform velocity stays strain-free; in 2D and 3D a rigid
+    // rotation is not, at a starved point. Inside the sand m_i / S_i is 0.4 to 0.5 (linear hats)
+    // and uGIMP's tails keep it above lp / h, far above C^2 / 2 (test_StarvedNodes.cpp). The
+    // point's velocity, sum N_i v_i, is the nodes' momentum and stays as it is. (The Deltares
+    // column resettling at t = 51.88 s: a lone point 2.4e-8 cells past node row 10 read -563 m/s
+    // at the node above, a strain of -1.21 in one step, a porosity of 3.98.)
+    const Real starved = starvedShare();
     // The solid's update, with the front diffusion's sums only on steps that have any: with no
     // diffusion node no point diffuses (its weights sum to 1, so some node with N > 0 is not one)
     auto solidPoint = [&](Index p, auto withDiffusion, auto linearShapes) {
         constexpr bool diffusion = decltype(withDiffusion)::value;
         constexpr bool linear = decltype(linearShapes)::value;
         Real vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
-        Real starvedL[D][D] = {}, starvedSlope[D] = {};  // sum (1 - w_i) grad N_i v_i, sum (1 - w_i) grad N_i
-        bool diffuses = diffusion, held[D] = {};
+        // per component: sum (1 - w_i) grad N_i v_i, sum (1 - w_i) grad N_i, sum N_i w_i v_i, sum N_i w_i
+        Real starvedL[D][D] = {}, starvedSlope[D][D] = {}, fedV[D] = {}, fedN[D] = {};
+        bool diffuses = diffusion, held[D] = {}, anyStarved = false;
         forEachNodeOfPoint<linear>(grid_, solid_, p, [&](Index i, Real N, const Real* gradN) {
-            const Real starvedMass = starvedShare * stiffnessMass_[i];
-            const Real cut = massS_[i] < starvedMass ? 1 - massS_[i] / starvedMass : 0;  // 1 - w_i
+            const Real w = fedWeight(i, starved);
             for (int d = 0; d < D; ++d) {
                 const Real v = velS_[i * D + d];
                 vNew[d] += N * v;
                 for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
-                if (cut > 0) {
-                    starvedSlope[d] += cut * gradN[d];
-                    for (int e = 0; e < D; ++e) starvedL[d][e] += cut * v * gradN[e];
+                const Real wd = masks_.solidFixed[i * D + d] ? Real(1) : w;
+                fedV[d] += N * wd * v;
+                fedN[d] += N * wd;
+                if (wd < 1) {
+                    anyStarved = true;
+                    for (int e = 0; e < D; ++e) {
+                        starvedSlope[d][e] += (1 - wd) * gradN[e];
+                        starvedL[d][e] += (1 - wd) * v * gradN[e];
+                    }
                 }
                 if constexpr (diffusion) gradPhi[d] -= gradN[d] * sandPorosity_[i];
             }
@@ -83,8 +88,13 @@ void DoublePointSolver<D>::gridToPoints() {
                 for (int d = 0; d < D - 1; ++d) held[d] = held[d] || (N > 0 && masks_.solidFixed[i * D + d]);
             }
         });
-        for (int d = 0; d < D; ++d)
-            for (int e = 0; e < D; ++e) L[d][e] -= starvedL[d][e] - vNew[d] * starvedSlope[e];
+        if (anyStarved) {
+            for (int d = 0; d < D; ++d) {
+                // a point whose nodes are all starved (a lone grain in water) keeps its own velocity
+                const Real vFed = fedN[d] > 1e-12 ? fedV[d] / fedN[d] : vNew[d];
+                for (int e = 0; e < D; ++e) L[d][e] -= starvedL[d][e] - vFed * starvedSlope[d][e];
+            }
+        }
         const Index cell = solid_.shape.cell[p];
         const Real radius = solid_.x[p * D];  // where the shape functions were taken
         for (int d = 0; d < D; ++d) {

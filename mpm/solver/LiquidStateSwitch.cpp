@@ -12,6 +12,7 @@ namespace qs {
 
 template <int D>
 void DoublePointSolver<D>::switchLiquidState() {
+    const Real starved = starvedShare();
     forAllCells(grid_.numCells(), solidCellStart_, [&](Index c) {
         const Index first = solidCellStart_[c], last = solidCellStart_[c + 1];
         if (first == last) {
@@ -33,10 +34,22 @@ void DoublePointSolver<D>::switchLiquidState() {
         }
         nMax /= mass;
         cellDiffusivity_[c] = diffusivity / mass;
-        // div v_S at the cell centre from this step's nodal velocities (extension positive)
+        // div v_S at the cell centre from this step's nodal velocities (extension positive). A
+        // starved node (GridToPoints.cpp) counts with its fed weight w_i and, for the rest, the
+        // cell's mass-weighted solid velocity: its own is a force over a sliver of mass
+        Real cellMomentum[D] = {}, cellMass = 0;
+        grid_.forEachNodeOfCell(c, [&](Index i, int) {
+            cellMass += massS_[i];
+            for (int a = 0; a < D; ++a) cellMomentum[a] += massS_[i] * velS_[i * D + a];
+        });
         Real divergence = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
-            for (int a = 0; a < D; ++a) divergence += grid_.divergenceWeight(c, corner, a) * velS_[i * D + a];
+            const Real w = fedWeight(i, starved);
+            for (int a = 0; a < D; ++a) {
+                const Real wa = masks_.solidFixed[i * D + a] ? Real(1) : w;
+                const Real v = cellMass > 0 ? wa * velS_[i * D + a] + (1 - wa) * cellMomentum[a] / cellMass : velS_[i * D + a];
+                divergence += grid_.divergenceWeight(c, corner, a) * v;
+            }
         });
         // the cell's porosity decides when it turns fluidised; its densest node when it resettles:
         // a sediment grows into the cell from one side, and the rest of the cell, still looser

@@ -201,7 +201,7 @@ Real DoublePointSolver<D>::waterVolumeAt(Index node) const {
 
 template <int D>
 void DoublePointSolver<D>::pointsToGrid() {
-    for (auto* a : {&massS_, &massL_, &solidVolume_, &dragA_, &dragB_, &stiffnessMass_})
+    for (auto* a : {&massS_, &massL_, &solidVolume_, &dragA_, &dragB_, &slopeMass_})
         std::fill(a->begin(), a->end(), 0.0);
     for (auto* a : {&momS_, &momL_, &forceS_, &forceL_}) std::fill(a->begin(), a->end(), 0.0);
 
@@ -254,7 +254,7 @@ void DoublePointSolver<D>::pointsToGrid() {
             Real* const dragB = dragB_.data();
             Real* const mom = momS_.data();
             Real* const force = forceS_.data();
-            Real* const stiffness = stiffnessMass_.data();
+            Real* const slopeMass = slopeMass_.data();
             const LinearStencil<D> st = linearStencil(grid_, &solid_.x[p * D]);
             const SolidShares t = sharesOf(p);
             const Real* C = &solid_.velocityGradient[p * D * D];
@@ -304,7 +304,7 @@ void DoublePointSolver<D>::pointsToGrid() {
                     force[i * D + d] += keep[k] * f;
                     slope2 += st.grad[k][d] * st.grad[k][d];
                 }
-                stiffness[i] += keep[k] * t.m * h * h * slope2;
+                slopeMass[i] += keep[k] * t.m * h * h * slope2;
                 if (axisymmetric) force[i * D] -= t.hoop * N[k];
             }
         });
@@ -340,7 +340,7 @@ void DoublePointSolver<D>::pointsToGrid() {
                 Real dx[D], slope2 = 0;
                 for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(first[e] + offset[e]) - centre[e];
                 for (int e = 0; e < D; ++e) slope2 += gradN[e] * gradN[e];
-                stiffnessMass_[i] += t.m * grid_.h() * grid_.h() * slope2;
+                slopeMass_[i] += t.m * grid_.h() * grid_.h() * slope2;
                 for (int d = 0; d < D; ++d) {
                     Real vi = v[d];
                     for (int e = 0; e < D; ++e) vi += C[d * D + e] * dx[e];

@@ -202,6 +202,12 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     ReservoirModel& reservoir = windowed ? static_cast<ReservoirModel&>(*gate) : *builtIn;
     DoublePointSolver<D> solver(config, reservoir);
     if (rotation) rotation->commit();  // everything loaded: the earlier output becomes .previous
+    // the case as run: the file, or with the command line's overrides marked (io/CaseOverride.hpp)
+    if (options.writeFiles && !config.effectiveCase.empty()) {
+        std::ofstream effective(outDir / "case.effective.toml", std::ios::trunc);
+        effective << config.effectiveCase;
+        QS_CHECK(effective.good(), "cannot write " << (outDir / "case.effective.toml").string());
+    }
 
     std::ofstream couplingLog;
     if (windowed && options.writeFiles)
