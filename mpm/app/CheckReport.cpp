@@ -94,6 +94,7 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
     const double KL = config.liquid.bulkModulus, h = config.grid.cellSize;
     out << std::setprecision(4);
     out << "case " << config.caseDirectory << (config.title.empty() ? "" : ": " + config.title) << "\n";
+    for (const CaseOverride& o : config.overrides) out << "  with " << o.text() << "\n";
     out << "geometry: " << config.grid.dimension << "D";
     if (config.grid.geometry == GridGeometry::Axisymmetric)
         out << " axisymmetric (r, z), radius " << config.grid.width << " m";

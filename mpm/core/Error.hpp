@@ -20,8 +20,10 @@ public:
 class InputError : public Error {
 public:
     InputError(const std::string& file, int line, const std::string& key, const std::string& what)
-        : Error(format(file, line, key, what)), file_(file), line_(line), key_(key) {}
+        : Error(format(file, line, key, what)), file_(file), line_(line), key_(key), detail_(what) {}
     const std::string& file() const { return file_; }
+    /// what is wrong, without the file, line and key
+    const std::string& detail() const { return detail_; }
     int line() const { return line_; }
     const std::string& key() const { return key_; }
 
@@ -39,6 +41,7 @@ private:
     std::string file_;
     int line_;
     std::string key_;
+    std::string detail_;
 };
 
 }  // namespace qs

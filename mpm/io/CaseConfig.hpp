@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+#include "io/CaseOverride.hpp"
+
 namespace qs {
 
 enum class ShapeFunctionKind { Linear, Gimp };
@@ -221,6 +223,10 @@ struct CaseConfig {
     TimeConfig time;
     std::vector<MonitorConfig> monitors;
     OutputConfig output;
+    /// the command line's overrides (--set KEY=VALUE), in order, and the case as run (TOML),
+    /// written to OUTPUT/case.effective.toml
+    std::vector<CaseOverride> overrides;
+    std::string effectiveCase;
 
     const MaterialConfig& material(const std::string& name) const;
     double sandTop() const;            ///< m, filter + sum of layer thicknesses

@@ -19,6 +19,7 @@
 
 #include "core/Constants.hpp"
 #include "core/Error.hpp"
+#include "io/CaseOverrides.hpp"
 #include "io/CaseRules.hpp"
 #include "io/DidYouMean.hpp"
 #include "io/KeyLocations.hpp"
@@ -660,8 +661,25 @@ private:
 
 }  // namespace
 
+namespace {
+
+/// An error the schema found, placed at the override that caused it: its key, or a key under it
+/// (a table set whole); an error elsewhere, in a case with overrides, lists them
+[[noreturn]] void blameOverride(const InputError& e, const std::vector<CaseOverride>& overrides) {
+    for (const CaseOverride& o : overrides)
+        if (e.key() == o.key || e.key().rfind(o.key + ".", 0) == 0 || o.key.rfind(e.key() + ".", 0) == 0 ||
+            e.file().find(", " + o.text()) != std::string::npos)
+            throw InputError(e.file().find(", --set ") == std::string::npos ? e.file() + ", " + o.text() : e.file(),
+                             0, e.key(), e.detail());
+    std::string with;
+    for (const CaseOverride& o : overrides) with += (with.empty() ? "" : ", ") + o.text();
+    throw InputError(e.file(), e.line(), e.key(), e.detail() + " (with " + with + ")");
+}
+
+}  // namespace
+
 CaseConfig parseCase(const std::string& tomlText, const std::string& fileName,
-                     const std::string& caseDirectory) {
+                     const std::string& caseDirectory, const std::vector<CaseOverride>& overrides) {
     toml::table root;
 #if TOML_EXCEPTIONS
     try {
@@ -677,11 +695,22 @@ CaseConfig parseCase(const std::string& tomlText, const std::string& fileName,
                          "TOML syntax error: " + std::string(result.error().description()));
     root = std::move(result).table();
 #endif
+    const std::vector<OverrideSite> sites = applyOverrides(root, overrides, fileName);
     KeyLocations where(fileName);
-    return Loader(where, caseDirectory).load(root);
+    CaseConfig config;
+    try {
+        config = Loader(where, caseDirectory).load(root);
+    } catch (const InputError& e) {
+        if (overrides.empty()) throw;
+        blameOverride(e, overrides);
+    }
+    config.overrides = overrides;
+    // without overrides the file itself, comments and all
+    config.effectiveCase = overrides.empty() ? tomlText : effectiveCaseText(tomlText, root, overrides, sites, fileName);
+    return config;
 }
 
-CaseConfig loadCase(const std::string& caseDirectory) {
+CaseConfig loadCase(const std::string& caseDirectory, const std::vector<CaseOverride>& overrides) {
     const std::filesystem::path file = std::filesystem::path(caseDirectory) / "case.toml";
     if (std::filesystem::is_directory(file))
         throw InputError(file.string(), 0, "",
@@ -697,7 +726,7 @@ CaseConfig loadCase(const std::string& caseDirectory) {
     }
     std::ostringstream text;
     text << in.rdbuf();
-    return parseCase(text.str(), file.string(), caseDirectory);
+    return parseCase(text.str(), file.string(), caseDirectory, overrides);
 }
 
 }  // namespace qs

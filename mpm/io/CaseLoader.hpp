@@ -18,6 +18,7 @@
 // (e.g. "materials.sand.porosity", "layers[1].thickness"), the bad value and what is expected.
 // Loading stops at the first problem.
 #include <string>
+#include <vector>
 
 #include "io/CaseConfig.hpp"
 
@@ -26,11 +27,13 @@ namespace qs {
 /// Reads CASE_DIR/case.toml, validates it completely and returns the config. Throws qs::InputError
 /// naming file, line, full dotted key (e.g. "materials.sand.porosity") and expected value.
 /// config.caseDirectory is set to `caseDirectory` as given.
-CaseConfig loadCase(const std::string& caseDirectory);
+/// With `overrides` (--set KEY=VALUE) applied to the file before validation: an override is
+/// checked exactly like the key in the file, and an error it causes names it (io/CaseOverride.hpp).
+CaseConfig loadCase(const std::string& caseDirectory, const std::vector<CaseOverride>& overrides = {});
 
 /// Same, from a TOML string (for tests); `fileName` is used in messages. Relative paths in the
 /// case (reservoir.openfoam_case) are resolved against `caseDirectory`.
 CaseConfig parseCase(const std::string& tomlText, const std::string& fileName,
-                     const std::string& caseDirectory = ".");
+                     const std::string& caseDirectory = ".", const std::vector<CaseOverride>& overrides = {});
 
 }  // namespace qs

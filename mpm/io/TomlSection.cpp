@@ -87,6 +87,9 @@ std::optional<double> Section::optionalNumber(std::string_view key, const Range&
             std::istringstream probe(s->get());
             double x;
             if (probe >> x && probe.eof()) what += "; write numbers without quotes";
+            else if (std::istringstream(s->get()) >> x)  // "50s", "2 kPa": a number with a unit
+                what += "; write the number alone, in " + (range.unit.empty() ? std::string("SI units") : range.unit) +
+                        " (units are SI and not written)";
         }
         fail(key, what);
     }
