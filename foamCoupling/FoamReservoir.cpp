@@ -62,7 +62,8 @@ FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume)
       reservoirPatch_(config.reservoir.reservoirPatch),
       density_(config.liquid.density),
       gravity_(config.gravity),
-      area_(config.reservoir.area) {
+      shape_(config.reservoir.areaTable.empty() ? ReservoirShape::prismatic(config.reservoir.area)
+                                                 : ReservoirShape::table(config.reservoir.areaTable)) {
     head_ = trialHead_ = config.reservoir.head;
     prepareEnvironment();
     const fs::path source(config.reservoir.openfoamCase);
@@ -120,7 +121,7 @@ std::string FoamReservoir::description() const { return tube_ ? tube_->descripti
 double FoamReservoir::initialGatePressure() const { return density_ * gravity_ * head_; }
 
 double FoamReservoir::solveWindow(double /*t*/, double dt, double flux) {
-    trialHead_ = head_ - flux * dt / area_;
+    trialHead_ = shape_.levelAfter(head_, flux * dt);
     // the level at the window's middle drives the line over the window
     const double p0 = gravity_ * 0.5 * (head_ + trialHead_);
     double p = 0;

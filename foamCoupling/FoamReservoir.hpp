@@ -19,6 +19,7 @@
 #include <memory>
 #include <string>
 
+#include "reservoir/ReservoirShape.hpp"
 #include "FoamTube.hpp"
 #include "coupling/WindowedModel.hpp"
 #include "io/CaseConfig.hpp"
@@ -53,7 +54,8 @@ private:
     std::string userPaths(std::string text) const;
 
     std::string caseName_, gatePatch_, reservoirPatch_, workDir_, logFile_;
-    double density_, gravity_, area_;
+    double density_, gravity_;
+    ReservoirShape shape_;  ///< the plan area by level: the level balance of the reservoir
     double head_ = 0, trialHead_ = 0;
     bool pending_ = false;      ///< a window was solved and not yet accepted
     std::unique_ptr<Tube> tube_;

@@ -33,6 +33,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from hydraulics import analytic_lines  # noqa: E402
+
 
 def read_series(path):
     with open(path, newline="") as f:
@@ -69,115 +72,6 @@ def read_space_time(path, cell):
                 columns.append((np.where(count > 0, por / count, np.nan), np.where(count > 0, fl / count, np.nan)))
             times.append(float(g.attrs["time"]))
     return np.array(times), rows, columns
-
-
-def churchill(re):
-    """Darcy friction factor of a smooth pipe in every regime (Churchill 1977; mpm/physics/PipeFriction)."""
-    import math
-    re = max(re, 1e-12)
-    A = (2.457 * math.log(1 / ((7 / re) ** 0.9))) ** 16
-    B = (37530 / re) ** 16
-    return 8 * ((8 / re) ** 12 + (A + B) ** -1.5) ** (1 / 12)
-
-
-def feed_line(case, case_dir):
-    """The reservoir's line: (d, L, sum K, turbulent friction?) from the lumped keys, or from an
-    OpenFOAM wedge pipe (blockMeshDict's L and radius; the porousBafflePressure baffles' I in 0/p,
-    plus 1 for the kinetic energy leaving at the gate); None without a line."""
-    import math
-    import re
-
-    res = case.get("reservoir", {})
-    if res.get("model") == "openfoam":
-        base = os.path.join(case_dir, res.get("openfoam_case", "reservoir"))
-        try:
-            text = open(os.path.join(base, "system", "blockMeshDict")).read()
-            L = float(re.search(r"^L\s+([0-9.eE+-]+);", text, re.M).group(1))
-            y = float(re.search(r"^yR\s+([0-9.eE+-]+);", text, re.M).group(1))
-        except (OSError, AttributeError, ValueError):
-            return None
-        rv = y / math.cos(math.radians(2.5))  # the area-true radius of the wedge's vertices
-        d = 2 * rv / math.sqrt(2 * math.pi / (72 * math.sin(math.radians(5))))
-        K = 1.0
-        try:
-            p = open(os.path.join(base, "0", "p")).read()
-            for block in re.findall(r"_half0\s*\{([^}]*)\}", p):
-                if "porousBafflePressure" in block:
-                    K += float(re.search(r"\bI\s+([0-9.eE+-]+);", block).group(1))
-        except (OSError, AttributeError, ValueError):
-            pass
-        turbulent = True
-        try:
-            tp = open(os.path.join(base, "constant", "turbulenceProperties")).read()
-            turbulent = not re.search(r"^simulationType\s+laminar;", tp, re.M)
-        except OSError:
-            pass
-        return d, L, K, turbulent
-    d, L = res.get("tube_diameter", 0.0), res.get("tube_length", 0.0)
-    if d <= 0 or L <= 0:
-        return None
-    return d, L, res.get("minor_loss", 0.0), res.get("tube_friction", "smooth_pipe") == "smooth_pipe"
-
-
-def line_loss(line, Q, g, mu, rho):
-    """m, the line's head loss at flux Q (m3/s): wall friction f L/d and minor losses, on U^2/2g."""
-    import math
-    if line is None:
-        return 0.0
-    d, L, K, turbulent = line
-    U = abs(Q) / (math.pi * d * d / 4)
-    re = rho * U * d / mu
-    f = churchill(re) if turbulent else 64 / max(re, 1e-12)
-    return (f * L / d + K) * U * U / (2 * g)
-
-
-def analytic_lines(case, case_dir, t, head):
-    """Quasi-steady filter velocities for the reservoir head at each time: fixed bed, fluidised bed."""
-    import math
-
-    g = case.get("gravity", 9.81)
-    liquid = case.get("liquid", {})
-    rho, mu = liquid.get("density", 998.2), liquid.get("viscosity", 8.91e-4)
-    grid, column = case["grid"], case["column"]
-    area = grid.get("cross_section_area")
-    if not area or case.get("gate", {}).get("mode", "pressure") != "pressure":
-        return None
-    tail = column.get("overflow_level", column.get("water_level"))
-    line = feed_line(case, case_dir)
-    layers, mats = case["layers"], case["materials"]
-    coeff, icH = [], 0.0
-    for layer in layers:
-        m = mats[layer["material"]]
-        n0, A, B = m["porosity"], m.get("ergun_a", 150.0), m.get("ergun_b", 1.75)
-        perm = m["permeability"]
-        shape = lambda n: min(n, 0.95) ** 3 / (1 - min(n, 0.95)) ** 2
-        if perm["mode"] == "constant":
-            kappa = perm["value"]
-        elif perm["mode"] == "kozeny_carman":
-            kappa = perm["grain_size"] ** 2 * shape(n0) / A
-        else:
-            kappa = perm["value"]
-        F = B / (math.sqrt(A) * n0 ** 1.5) if m.get("ergun", True) else 0.0
-        L = layer["thickness"]
-        coeff.append((L * mu / (kappa * rho * g), L * F / (g * math.sqrt(kappa))))
-        icH += (m.get("grain_density", 2650) / rho - 1) * (1 - n0) * L
-    a, b = sum(c[0] for c in coeff), sum(c[1] for c in coeff)
-
-    def solve(loss, dh):  # the filter velocity q whose loss is dh (the loss grows with q): bisection
-        if dh <= 0:
-            return 0.0
-        lo, hi = 0.0, 1.0
-        for _ in range(100):
-            mid = 0.5 * (lo + hi)
-            lo, hi = (mid, hi) if loss(mid) < dh else (lo, mid)
-        return 0.5 * (lo + hi)
-
-    column_loss = lambda q: a * q + b * q * q
-    tube = lambda q: line_loss(line, q * area, g, mu, rho)
-    dh = head - tail
-    fixed = np.array([solve(lambda q: column_loss(q) + tube(q), h) for h in dh])
-    fluid = np.array([solve(tube, h - icH) for h in dh]) if line is not None else None
-    return fixed, fluid
 
 
 def linear_fit(t, y):

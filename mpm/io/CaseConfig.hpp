@@ -17,6 +17,7 @@
 #include <optional>
 #include <cstdint>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/CaseOverride.hpp"
@@ -166,6 +167,11 @@ struct ReservoirConfig {
                                        ///<    plane (the initial level for Lumped and OpenFoam)
     double headRate = 0.0;             ///< m/s, linear change of the head (ConstantHead)
     double area = 0.0;                 ///< m2, reservoir plan area (Lumped, OpenFoam)
+    /// (level m, plan area m2) rows: the plan area by level, replacing `area` (Lumped, OpenFoam)
+    std::vector<std::pair<double, double>> areaTable;
+    /// (time s, head m) rows: the head by time, linear between rows (ConstantHead); `head` is
+    /// then the first row's
+    std::vector<std::pair<double, double>> headSchedule;
     double tubeDiameter = 0.0;         ///< m, U-tube inner diameter (Lumped; 0: no tube)
     double tubeLength = 0.0;           ///< m, U-tube length (Lumped)
     double minorLoss = 0.0;            ///< -, sum of minor-loss coefficients (Lumped)

@@ -19,6 +19,7 @@
 
 #include "core/Constants.hpp"
 #include "core/Error.hpp"
+#include "core/PiecewiseLinear.hpp"
 #include "io/CaseOverrides.hpp"
 #include "io/CaseRules.hpp"
 #include "io/DidYouMean.hpp"
@@ -71,7 +72,7 @@ constexpr const char* kPorosityFieldKeys[] = {"standard_deviation", "correlation
 constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
 constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
 constexpr const char* kReservoirKeys[] = {
-    "model",       "head",       "head_rate",     "area",       "tube_diameter",
+    "model",       "head",       "head_rate",     "head_schedule", "area",       "area_table",    "tube_diameter",
     "tube_length", "minor_loss", "tube_friction", "openfoam_case", "gate_patch", "reservoir_patch"};
 constexpr const char* kCouplingKeys[] = {"scheme", "window", "tolerance", "max_iterations",
                                          "relaxation"};
@@ -161,6 +162,46 @@ std::optional<HorizontalRange> optionalRange(const Section& s, std::string_view 
         s.fail(key, "range [" + number(r.from) + ", " + number(r.to) + "] m is out of range: expected 0 <= from < to <= " +
                         number(width) + " m, the grid's width (" + hint + ")");
     return r;
+}
+
+/// A table of rows written `key = [[x, y], [x, y], ...]`: x strictly increasing (`xName`, in
+/// xRange), y in yRange; at least `minRows` rows
+std::vector<std::pair<double, double>> optionalRows(const Section& s, std::string_view key, const char* xName,
+                                                    const Range& xRange, const char* yName, const Range& yRange,
+                                                    std::size_t minRows) {
+    std::vector<std::pair<double, double>> rows;
+    const toml::node* node = s.find(key);
+    if (!node) return rows;
+    const std::string form = std::string("[[") + xName + ", " + yName + "], ...] with " + xName + " in " + xRange.unit +
+                             " and " + yName + " in " + yRange.unit;
+    auto value = [](const toml::node* n, double& v) {
+        if (!n) return false;
+        if (const auto* i = n->as_integer()) { v = static_cast<double>(i->get()); return true; }
+        if (const auto* f = n->as_floating_point()) { v = f->get(); return std::isfinite(v); }
+        return false;
+    };
+    const toml::array* a = node->as_array();
+    if (!a || a->size() < minRows)
+        s.fail(key, "expected at least " + std::to_string(minRows) + " rows " + form + ", got " + describe(*node));
+    for (std::size_t k = 0; k < a->size(); ++k) {
+        const toml::array* row = a->get(k)->as_array();
+        double x = 0, y = 0;
+        if (!row || row->size() != 2 || !value(row->get(0), x) || !value(row->get(1), y))
+            s.fail(key, "row " + std::to_string(k + 1) + ": expected two numbers [" + xName + ", " + yName + "] (" + form +
+                            "), got " + describe(*a->get(k)));
+        if (!xRange.contains(x))
+            s.fail(key, "row " + std::to_string(k + 1) + ": " + xName + " = " + number(x) + " " + xRange.unit +
+                            " is out of range: expected " + xRange.describe());
+        if (!yRange.contains(y))
+            s.fail(key, "row " + std::to_string(k + 1) + ": " + yName + " = " + number(y) + " " + yRange.unit +
+                            " is out of range: expected " + yRange.describe());
+        if (!rows.empty() && !(x > rows.back().first))
+            s.fail(key, "row " + std::to_string(k + 1) + ": " + xName + " = " + number(x) + " " + xRange.unit +
+                            " does not follow row " + std::to_string(k) + "'s " + number(rows.back().first) +
+                            ": the rows' " + xName + " must increase strictly");
+        rows.emplace_back(x, y);
+    }
+    return rows;
 }
 
 // ------------------------------------------------------------------------------------------------
@@ -523,20 +564,40 @@ private:
             r.head = pressureGate ? s.requiredNumber("head", head, headHint)
                                   : s.optionalNumber("head", 0.0, head, headHint);
         };
+        // the plan area: one number, or a table by level (reservoir/ReservoirShape.hpp)
+        auto readArea = [&] {
+            r.areaTable = optionalRows(s, "area_table", "level", nonNegative("m"), "area", positive("m2"), 2);
+            if (r.areaTable.empty()) {
+                r.area = s.requiredNumber("area", positive("m2"),
+                                          "plan area of the reservoir (its level balance), or area_table");
+                return;
+            }
+            s.forbid("area", "area_table gives the plan area at every level; use one or the other");
+            r.area = PiecewiseLinear(r.areaTable)(r.head);  // the area at the start, for reports
+        };
         switch (r.kind) {
             case ReservoirKind::ConstantHead:
-                for (const char* key : {"area", "tube_diameter", "tube_length", "minor_loss", "tube_friction",
-                                        "openfoam_case", "gate_patch", "reservoir_patch"})
+                for (const char* key : {"area", "area_table", "tube_diameter", "tube_length", "minor_loss",
+                                        "tube_friction", "openfoam_case", "gate_patch", "reservoir_patch"})
                     s.forbid(key, notHere);
+                r.headSchedule = optionalRows(s, "head_schedule", "time", nonNegative("s"), "head", head, 1);
+                if (!r.headSchedule.empty()) {
+                    const std::string why = "head_schedule gives the head at every time (its first row's head is the "
+                                            "initial one); use one or the other";
+                    s.forbid("head", why);
+                    s.forbid("head_rate", why);
+                    r.head = r.headSchedule.front().second;
+                    break;
+                }
                 readHead();
                 r.headRate = s.optionalNumber("head_rate", 0.0, anyValue("m/s"));
                 break;
             case ReservoirKind::Lumped:
                 for (const char* key :
-                     {"head_rate", "openfoam_case", "gate_patch", "reservoir_patch"})
-                    s.forbid(key, notHere);
+                     {"head_rate", "head_schedule", "openfoam_case", "gate_patch", "reservoir_patch"})
+                    s.forbid(key, notHere + " (the level follows the flux; a scheduled head is model = \"constant_head\")");
                 readHead();
-                r.area = s.requiredNumber("area", positive("m2"), "plan area of the reservoir");
+                readArea();
                 r.tubeDiameter =
                     s.optionalNumber("tube_diameter", 0.0, nonNegative("m"), "0: no tube");
                 if (r.tubeDiameter > 0.0) {
@@ -557,11 +618,10 @@ private:
                 }
                 break;
             case ReservoirKind::OpenFoam: {
-                for (const char* key : {"head_rate", "tube_diameter", "tube_length", "minor_loss", "tube_friction"})
+                for (const char* key : {"head_rate", "head_schedule", "tube_diameter", "tube_length", "minor_loss", "tube_friction"})
                     s.forbid(key, notHere + " (the OpenFOAM case holds the tube)");
                 readHead();
-                r.area = s.requiredNumber("area", positive("m2"),
-                                          "plan area of the reservoir (its level balance)");
+                readArea();
                 const std::string given = s.requiredString(
                     "openfoam_case",
                     "the path of the OpenFOAM case directory, relative to the case directory");

@@ -12,6 +12,11 @@ ConstantHead::ConstantHead(double liquidDensity, double gravity, double head, do
                  << liquidDensity << " kg/m3 and " << gravity << " m/s2");
 }
 
+ConstantHead::ConstantHead(double liquidDensity, double gravity, const PiecewiseLinear::Points& schedule)
+    : ConstantHead(liquidDensity, gravity, schedule.empty() ? 0.0 : schedule.front().second) {
+    schedule_ = PiecewiseLinear(schedule);
+}
+
 GateLaw ConstantHead::gateLaw(double t) const {
     GateLaw law;
     law.staticPressure = rhoG_ * headAt(t);

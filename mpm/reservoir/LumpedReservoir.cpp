@@ -11,15 +11,13 @@
 
 namespace qs {
 
-namespace {
-}
-
 LumpedReservoir::LumpedReservoir(const LumpedReservoirParameters& parameters)
-    : p_(parameters), head_(parameters.initialHead) {
+    : p_(parameters),
+      shape_(parameters.areaTable.empty() ? ReservoirShape::prismatic(parameters.area)
+                                          : ReservoirShape::table(parameters.areaTable)),
+      head_(parameters.initialHead) {
     QS_CHECK(p_.liquidDensity > 0.0 && p_.gravity > 0.0 && p_.viscosity > 0.0,
              "lumped reservoir: liquid density, gravity and viscosity must be > 0");
-    QS_CHECK(p_.area > 0.0, "lumped reservoir: the reservoir area must be > 0, got " << p_.area
-                                                                                 << " m2");
     QS_CHECK(p_.tubeDiameter >= 0.0 && p_.tubeLength >= 0.0 && p_.minorLoss >= 0.0,
              "lumped reservoir: tube diameter, tube length and minor-loss coefficient must be >= 0");
     QS_CHECK(p_.minorLoss == 0.0 || p_.tubeDiameter > 0.0,
@@ -47,7 +45,7 @@ GateLaw LumpedReservoir::gateLaw(double /*t*/) const {
 void LumpedReservoir::advance(double t, double dt, double gateFlux) {
     // Explicit in the flux, but Q is the end-of-step gate flux of an implicit gate update, so
     // the level balance is exact for the volume that actually crossed the gate.
-    head_ -= gateFlux * dt / p_.area;
+    head_ = shape_.levelAfter(head_, gateFlux * dt);
     lastFlux_ = gateFlux;
     meanFlux_ += (std::abs(gateFlux) - meanFlux_) * std::min(1.0, dt / kReynoldsAveraging);
     if (!p_.smoothPipeFriction && !reynoldsWarned_ && meanTubeReynolds() > kLaminarReynoldsLimit) {

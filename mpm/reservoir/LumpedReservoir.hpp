@@ -1,7 +1,8 @@
 #pragma once
 // LumpedReservoir: the upstream reservoir and its U-tube as one ODE (physics.md section 3).
 //
-//   A_r dh/dt = -Q                                   (level balance, h above the gate plane)
+//   A_r(h) dh/dt = -Q                                (level balance, h above the gate plane;
+//                                                     A_r by level: reservoir/ReservoirShape.hpp)
 //   p_gate = rho g h - phi(Re) rho g R_t Q - K rho/2 (Q/A_t)^2
 //            (static head, wall friction, minor losses: a valve, bends, the exit's kinetic energy)
 //
@@ -19,6 +20,7 @@
 // steps at several times the flow the tube's water column could carry (the lumped tube has no
 // inertia), and that spike says nothing about the tube's flow regime.
 #include "reservoir/ReservoirModel.hpp"
+#include "reservoir/ReservoirShape.hpp"
 
 namespace qs {
 
@@ -26,7 +28,9 @@ struct LumpedReservoirParameters {
     double liquidDensity = 998.2;  ///< kg/m3
     double gravity = 9.81;         ///< m/s2
     double viscosity = 8.91e-4;    ///< Pa s
-    double area = 0.0;             ///< m2, reservoir plan area A_r (> 0)
+    double area = 0.0;             ///< m2, reservoir plan area A_r (> 0), unless areaTable is given
+    /// (level m, plan area m2): a reservoir whose area changes with its level (ReservoirShape)
+    PiecewiseLinear::Points areaTable;
     double initialHead = 0.0;      ///< m, reservoir level above the gate plane at t = 0
     double tubeDiameter = 0.0;     ///< m (0: no tube, no losses)
     double tubeLength = 0.0;       ///< m
@@ -46,7 +50,7 @@ public:
 
     std::string name() const override { return "lumped"; }
     GateLaw gateLaw(double t) const override;
-    /// h -= Q dt / A_r (the flux of the step, measured after the gate update); remembers Q for
+    /// h falls by Q dt over the plan area (the flux of the step, measured after the gate update); remembers Q for
     /// the minor-loss slope and the Reynolds check.
     void advance(double t, double dt, double gateFlux) override;
     double head() const override { return head_; }
@@ -65,6 +69,7 @@ public:
 
 private:
     LumpedReservoirParameters p_;
+    ReservoirShape shape_;
     double tubeArea_ = 0.0;        ///< m2, A_t
     double tubeResistance_ = 0.0;  ///< s/m2
     double head_ = 0.0;            ///< m

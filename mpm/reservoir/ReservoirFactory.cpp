@@ -14,6 +14,8 @@ std::unique_ptr<ReservoirModel> makeReservoirModel(const CaseConfig& config) {
     const ReservoirConfig& r = config.reservoir;
     switch (r.kind) {
         case ReservoirKind::ConstantHead:
+            if (!r.headSchedule.empty())
+                return std::make_unique<ConstantHead>(config.liquid.density, config.gravity, r.headSchedule);
             return std::make_unique<ConstantHead>(config.liquid.density, config.gravity, r.head,
                                                   r.headRate);
         case ReservoirKind::Lumped: {
@@ -22,6 +24,7 @@ std::unique_ptr<ReservoirModel> makeReservoirModel(const CaseConfig& config) {
             p.gravity = config.gravity;
             p.viscosity = config.liquid.viscosity;
             p.area = r.area;
+            p.areaTable = r.areaTable;
             p.initialHead = r.head;
             p.tubeDiameter = r.tubeDiameter;
             p.tubeLength = r.tubeLength;

@@ -94,3 +94,52 @@ TEST_P(CriticalGradientIn, BaseEffectiveStressVanishesAndSandTurnsFluidisedAtThe
 }
 
 INSTANTIATE_TEST_SUITE_P(Geometries, CriticalGradientIn, kGeometries, geometryName);
+
+// The lab's way (reservoir.head_schedule): the head rises in steps of 0.02 in i, each held for
+// six consolidation times. i_c is the first step whose hold heaves the bed: its top still rises
+// over the second half of the hold, by more than 0.05 mm (twenty times the whole elastic response
+// to a step, 0.0025 mm), where below i_c it has settled. Within 3 % of the closed form; the step
+// below it holds and the heaving step fluidises the base (the steps resolve i_c to 0.02: guards).
+TEST(CriticalGradient, StepwiseHeadIncreasesFindTheCriticalGradient) {
+    const CaseRun run = runVerificationCase("stepwise_head");
+    const auto& c = run.config;
+    const auto& sand = c.material("sand");
+    const double ic = closed::criticalGradient(sand.grainDensity, c.liquid.density, sand.porosity);
+    const double L = c.sandTop() - c.filterLevel(), tail = *c.column.overflowLevel;
+    const auto& rows = c.reservoir.headSchedule;
+    ASSERT_GE(rows.size(), 4u);
+    auto heightAt = [&](double t) {  // the bed's height at the output nearest t
+        const ColumnState* best = &run.series.front();
+        for (const auto& s : run.series)
+            if (std::abs(s.time - t) < std::abs(best->time - t)) best = &s;
+        return best->bedHeight;
+    };
+    double found = -1, lastHeld = -1, worstHeldRise = 0;
+    bool fluidisedAtTheStep = false;
+    for (std::size_t k = 1; k < rows.size(); ++k) {
+        const bool hold = k + 1 < rows.size() ? rows[k].second == rows[k + 1].second : true;
+        if (!hold || rows[k].second == rows[k - 1].second) continue;  // a rise, or a hold's end
+        const double i = (rows[k].second - tail) / L, from = rows[k].first;
+        const double to = k + 1 < rows.size() ? rows[k + 1].first : c.time.end;
+        if (i < 0.9) continue;  // the ramp from hydrostatic
+        const double rise = heightAt(to) - heightAt(0.5 * (from + to));
+        if (rise > 5e-5) {
+            found = i;
+            for (const auto& s : run.series)
+                if (s.time > from && s.time <= to && s.fluidisedShare > 0) fluidisedAtTheStep = true;
+            break;
+        }
+        lastHeld = i;
+        worstHeldRise = std::max(worstHeldRise, rise);
+    }
+    ASSERT_GT(found, 0) << "no step heaved the bed up to i = " << (rows.back().second - tail) / L;
+    EXPECT_NEAR(found, ic, 0.03 * ic);
+    EXPECT_GE(found, ic) << "a step below i_c heaved the bed";
+    EXPECT_LT(lastHeld, ic) << "the step below the one found must be below i_c";
+    EXPECT_LE(found - ic, 0.02 + 1e-9) << "the first step above i_c must heave the bed";
+    EXPECT_TRUE(fluidisedAtTheStep) << "the heaving bed's base loosens to n_max within the hold";
+    EXPECT_LT(worstHeldRise, 1e-5) << "m: below i_c the bed settles within the hold";
+    std::printf("stepwise head: held at i = %.2f (its top rising %.2g mm over the hold's second half), heaved at the "
+                "step to i = %.2f; i_c = %.4f (%+.2f %%)\n",
+                lastHeld, 1e3 * worstHeldRise, found, ic, 100 * (found / ic - 1));
+}
