@@ -265,7 +265,8 @@ class Runner:
         self.study, self.quiet = study, quiet
         self.retry_failed = retry_failed
         self.lock = threading.Lock()
-        self.progress = {}  # name -> (fraction done, wall s, last line)
+        self.progress = {}  # name -> (fraction done, wall s, last line); wall live from started
+        self.started = {}  # name -> wall clock at its start
         self.procs = {}
         self.stopping = False
 
@@ -295,6 +296,7 @@ class Runner:
                                  start_new_session=True)
             with self.lock:
                 self.procs[v["name"]] = p
+                self.started[v["name"]] = start
                 self.progress[v["name"]] = (0.0, 0.0, "starting" + (" (resuming)" if resume else ""))
             last_error = ""
             for line in p.stdout:
@@ -364,11 +366,13 @@ class Runner:
 
     def print_progress(self, todo, start):
         with self.lock:
-            running = {n: p for n, p in self.progress.items() if n in self.procs}
+            now = time.time()
+            running = {n: (p[0], now - self.started[n], p[2]) for n, p in self.progress.items() if n in self.procs}
             finished = [p for n, p in self.progress.items() if n not in self.procs]
         for name, (frac, wall, line) in running.items():
             eta = wall * (1 - frac) / frac if frac > 0.005 else float("nan")
-            print(f"  {name}: {100 * frac:5.1f} %  {format_seconds(wall)} so far, ETA {format_seconds(eta)}", flush=True)
+            print(f"  {name}: {100 * frac:5.1f} %  {format_seconds(wall)} so far, ETA {format_seconds(eta)}"
+                  + ("" if frac > 0.005 else "  (no progress line from the run yet)"), flush=True)
         # overall: each running variant's remaining time, plus the queued ones at the mean run's length
         walls = [w / f for f, w, _ in list(running.values()) + finished if f > 0.005]
         mean = sum(walls) / len(walls) if walls else float("nan")

@@ -108,7 +108,7 @@ void DoublePointSolver<D>::allocate() {
         a->assign(nn, 0.0);
     diffusionNode_.assign(nn, 0);
     for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velLIncrement_,
-                    &pressureGradient_})
+                    &pressureGradient_, &fedWeight_})
         a->assign(nn * D, 0.0);
     solidCellStart_.assign(nc + 1, 0);
     liquidCellStart_.assign(nc + 1, 0);

@@ -183,6 +183,8 @@ private:
     /// kg, sum over the solid points reaching a node of m_p (h |grad N_ip|)^2: the points' mass
     /// weighted by the slopes of their hats there, the yardstick of a starved node (GridToPoints.cpp)
     std::vector<Real> slopeMass_;
+    /// -, [node][axis]: fedWeight of the node, 1 for a held component (this step's, GridToPoints.cpp)
+    std::vector<Real> fedWeight_;
     /// How far a node is fed with sand: m_i / (share S_i) for a starved node, else 1 (GridToPoints.cpp)
     Real fedWeight(Index i, Real share) const {
         const Real need = share * slopeMass_[i];

@@ -54,32 +54,19 @@ void DoublePointSolver<D>::gridToPoints() {
     // point's velocity, sum N_i v_i, is the nodes' momentum and stays as it is. (The Deltares
     // column resettling at t = 51.88 s: a lone point 2.4e-8 cells past node row 10 read -563 m/s
     // at the node above, a strain of -1.21 in one step, a porosity of 3.98.)
-    const Real starved = starvedShare();
     // The solid's update, with the front diffusion's sums only on steps that have any: with no
     // diffusion node no point diffuses (its weights sum to 1, so some node with N > 0 is not one)
     auto solidPoint = [&](Index p, auto withDiffusion, auto linearShapes) {
         constexpr bool diffusion = decltype(withDiffusion)::value;
         constexpr bool linear = decltype(linearShapes)::value;
         Real vNew[D] = {}, L[D][D] = {}, gridPorosity = 0, gradPhi[D] = {};
-        // per component: sum (1 - w_i) grad N_i v_i, sum (1 - w_i) grad N_i, sum N_i w_i v_i, sum N_i w_i
-        Real starvedL[D][D] = {}, starvedSlope[D][D] = {}, fedV[D] = {}, fedN[D] = {};
         bool diffuses = diffusion, held[D] = {}, anyStarved = false;
         forEachNodeOfPoint<linear>(grid_, solid_, p, [&](Index i, Real N, const Real* gradN) {
-            const Real w = fedWeight(i, starved);
             for (int d = 0; d < D; ++d) {
                 const Real v = velS_[i * D + d];
                 vNew[d] += N * v;
                 for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
-                const Real wd = masks_.solidFixed[i * D + d] ? Real(1) : w;
-                fedV[d] += N * wd * v;
-                fedN[d] += N * wd;
-                if (wd < 1) {
-                    anyStarved = true;
-                    for (int e = 0; e < D; ++e) {
-                        starvedSlope[d][e] += (1 - wd) * gradN[e];
-                        starvedL[d][e] += (1 - wd) * v * gradN[e];
-                    }
-                }
+                anyStarved = anyStarved || fedWeight_[i * D + d] < 1;
                 if constexpr (diffusion) gradPhi[d] -= gradN[d] * sandPorosity_[i];
             }
             gridPorosity += N * sandPorosity_[i];
@@ -89,6 +76,20 @@ void DoublePointSolver<D>::gridToPoints() {
             }
         });
         if (anyStarved) {
+            // a second pass, at the sand's edge only. Per component: sum (1 - w_i) grad N_i v_i,
+            // sum (1 - w_i) grad N_i, sum N_i w_i v_i, sum N_i w_i
+            Real starvedL[D][D] = {}, starvedSlope[D][D] = {}, fedV[D] = {}, fedN[D] = {};
+            forEachNodeOfPoint<linear>(grid_, solid_, p, [&](Index i, Real N, const Real* gradN) {
+                for (int d = 0; d < D; ++d) {
+                    const Real v = velS_[i * D + d], w = fedWeight_[i * D + d];
+                    fedV[d] += N * w * v;
+                    fedN[d] += N * w;
+                    for (int e = 0; e < D; ++e) {
+                        starvedSlope[d][e] += (1 - w) * gradN[e];
+                        starvedL[d][e] += (1 - w) * v * gradN[e];
+                    }
+                }
+            });
             for (int d = 0; d < D; ++d) {
                 // a point whose nodes are all starved (a lone grain in water) keeps its own velocity
                 const Real vFed = fedN[d] > 1e-12 ? fedV[d] / fedN[d] : vNew[d];

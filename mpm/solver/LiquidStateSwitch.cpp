@@ -12,7 +12,6 @@ namespace qs {
 
 template <int D>
 void DoublePointSolver<D>::switchLiquidState() {
-    const Real starved = starvedShare();
     forAllCells(grid_.numCells(), solidCellStart_, [&](Index c) {
         const Index first = solidCellStart_[c], last = solidCellStart_[c + 1];
         if (first == last) {
@@ -44,9 +43,8 @@ void DoublePointSolver<D>::switchLiquidState() {
         });
         Real divergence = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
-            const Real w = fedWeight(i, starved);
             for (int a = 0; a < D; ++a) {
-                const Real wa = masks_.solidFixed[i * D + a] ? Real(1) : w;
+                const Real wa = fedWeight_[i * D + a];
                 const Real v = cellMass > 0 ? wa * velS_[i * D + a] + (1 - wa) * cellMomentum[a] / cellMass : velS_[i * D + a];
                 divergence += grid_.divergenceWeight(c, corner, a) * v;
             }

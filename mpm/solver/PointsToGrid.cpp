@@ -373,6 +373,7 @@ void DoublePointSolver<D>::pointsToGrid() {
     const Real mu = config_.liquid.viscosity, rhoL = config_.liquid.density;
     const bool gridLiquid = config_.liquid.gridLiquidMass;
     const Index gateRow = grid_.nodeStride(D - 1);
+    const Real starved = starvedShare();
     forAll(grid_.numNodes(), [&](Index i) {
         Real vol = 0, solidSide = 0;
         grid_.forEachCellOfNode(i, [&](Index cell, int corner) {
@@ -418,6 +419,10 @@ void DoublePointSolver<D>::pointsToGrid() {
         drag_[i] = (massS_[i] > 0 && massL_[i] > 0)
                        ? ni * ni * mu * dragA_[i] + rhoL * ni * ni * ni * relSpeed_[i] * dragB_[i]
                        : 0.0;
+        // how far the node is fed with sand, per component (a held one keeps its weight): the
+        // phases after this read a starved node through it (GridToPoints.cpp)
+        const Real w = fedWeight(i, starved);
+        for (int d = 0; d < D; ++d) fedWeight_[i * D + d] = masks_.solidFixed[i * D + d] ? Real(1) : w;
     });
 }
 
