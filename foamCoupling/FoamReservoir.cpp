@@ -122,6 +122,10 @@ double FoamReservoir::initialGatePressure() const { return density_ * gravity_ *
 
 double FoamReservoir::solveWindow(double /*t*/, double dt, double flux) {
     trialHead_ = shape_.levelAfter(head_, flux * dt);
+    QS_CHECK(trialHead_ >= shape_.lowestLevel(),
+             "OpenFOAM reservoir: the level fell to " << trialHead_ << " m, below the reservoir's lowest level "
+             << shape_.lowestLevel() << " m: the reservoir ran empty, which quicksand does not model; extend "
+             "reservoir.area_table down to the tailwater or raise the head");
     // the level at the window's middle drives the line over the window
     const double p0 = gravity_ * 0.5 * (head_ + trialHead_);
     double p = 0;

@@ -7,7 +7,7 @@ Read from a case's TOML (a dict from tomllib):
   bed_coefficients(case)        the fixed bed's Darcy-Forchheimer loss a q + b q^2 and i_c H
   analytic_lines(case, ...)     quasi-steady filter velocities for a head series: fixed and fluidised bed
   head_decay(case, case_dir, t) the reservoir's head through a fixed bed: the laminar closed form
-                                (exponential) and the ODE with Blasius friction and minor losses
+                                (exponential) and the ODE with the line's friction and minor losses
 
 The same physics as mpm/physics (ClosedForms, PipeFriction, Permeability); these are the plots'
 reference lines, not the solver.
@@ -135,20 +135,15 @@ def bed_coefficients(case):
 
 
 
-def blasius(re):
-    """Blasius' friction factor of a smooth pipe, 0.316 Re^-1/4 (turbulent, Re 4e3 to 1e5), and
-    64/Re below Re = 2000 (laminar), joined where they meet."""
-    re = max(re, 1e-12)
-    return max(64 / re, 0.316 * re ** -0.25) if re > 2000 else 64 / re
-
-
 def head_decay(case, case_dir, t):
     """The reservoir's head above the tailwater through a fixed bed (a lumped or OpenFOAM
     reservoir of plan area A_r, or area_table), from its initial head, at times t (s):
       laminar:   u = u0 exp(-t / tau), tau = A_r (L / (K A_s) + R_t), the line's wall friction
                  Hagen-Poiseuille's and no minor loss (problem 6);
-      turbulent: A_r du/dt = -Q(u), u = a q + b q^2 + (f L_t / d + K) U^2 / 2g, f Blasius'
-                 (laminar 64/Re below Re 2000), K the line's minor losses: integrated (RK4).
+      turbulent: A_r du/dt = -Q(u), u = a q + b q^2 + (f L_t / d + K) U^2 / 2g, f the line's
+                 own law (line_loss: a smooth pipe's, Churchill 1977, which is Blasius' within 3 %
+                 for Re 4e3 to 1e5 and 64/Re in laminar flow, as the solver's; 64/Re for
+                 tube_friction = "laminar"), K the line's minor losses: integrated (RK4).
     Returns (tail m, laminar u m, turbulent u m, tau s) or None (no reservoir that falls)."""
     res = case.get("reservoir", {})
     if res.get("model") not in ("lumped", "openfoam"):
@@ -184,9 +179,7 @@ def head_decay(case, case_dir, t):
             q = Q / As
             extra = 0.0
             if line is not None:
-                d, L, K, _ = line
-                U = Q / (math.pi * d * d / 4)
-                extra = (blasius(rho * U * d / mu) * L / d + K) * U * U / (2 * g)
+                extra = line_loss(line, Q, g, mu, rho)
             return a * q + b * q * q + extra
         lo, hi = 0.0, 1e-6
         while loss(hi) < u:
@@ -201,7 +194,7 @@ def head_decay(case, case_dir, t):
 
 
 def _integrate(flow, area, tail, u0, t):
-    """u(t) of A(tail + u) du/dt = -flow(u), RK4 on a step 1/200 of the span, read at t"""
+    """u(t) of A(tail + u) du/dt = -flow(u), RK4 on a step 1/2000 of the span, read at t"""
     if len(t) == 0:
         return np.array([])
     T = float(np.max(t))

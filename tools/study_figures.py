@@ -17,7 +17,8 @@ From a run's series.csv and case.effective.toml (docs/case-format.md):
                                  line through a fixed bed: exact) over u from 0.95 u0 down to 0.05 u0
   head_exponent, head_exponent_r2  fitted as du/dt = -a u^n (a turbulent line: n = 4/7 with Blasius'
                                  friction alone; 1 for a laminar one), over the same range
-A figure that does not apply (no fluidisation, a constant head) is left empty.
+A figure that does not apply (no fluidisation, a constant head; the head fits for a reservoir
+with an area_table, whose decay is neither law) is left empty.
 """
 import csv
 import json
@@ -65,7 +66,6 @@ def head_fits(t, head, tail):
     if len(u) < 5 or u[0] <= 0 or np.ptp(head) < 1e-9:
         return None, None, None, None
     u0 = u[0]
-    window = (u <= 0.95 * u0) & (u >= 0.05 * u0)
     # the window starts where the head first falls below 0.95 u0 and ends where it first falls below 0.05
     below = np.nonzero(u <= 0.95 * u0)[0]
     if len(below) == 0:
@@ -119,7 +119,8 @@ def figures(output_dir):
     if "cumulative_solid_outflow" in s:
         f["sand_carried_out_kg"] = float(s["cumulative_solid_outflow"][-1])
     res = case.get("reservoir", {})
-    if res.get("model") in ("lumped", "openfoam"):
+    # the fits assume one plan area: with area_table u(t) is neither law, and they are left empty
+    if res.get("model") in ("lumped", "openfoam") and "area_table" not in res:
         column = case["column"]
         tail = column.get("overflow_level", column.get("water_level"))
         tau, r2, n, r2n = head_fits(t, s["reservoir_head"], tail)

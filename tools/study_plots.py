@@ -4,8 +4,9 @@
   study_series.png   head above the tailwater, filter velocity (gate flux / A_s) and bed height
                      against time, every variant overlaid and labelled; beside the head, each
                      variant's closed forms for a fixed bed (tools/hydraulics.head_decay): the
-                     laminar line's exponential (dotted) and the ODE with Blasius' friction and
-                     the minor losses (dashed)
+                     laminar line's exponential (dotted) and the ODE with the line's own wall
+                     friction (Churchill's smooth pipe, Blasius' within 3 % when turbulent) and
+                     its minor losses (dashed)
   study_figures.png  each figure of study.csv against each parameter: one row per figure, one
                      column per parameter, points joined along that parameter and coloured by
                      the others' values
@@ -70,7 +71,7 @@ def plot_series(study):
         axes[2].plot(t, s["bed_height"] * 1e3, color=colour, label=name)
         drawn += 1
     axes[0].set_ylabel("head above the tailwater (m)")
-    axes[0].set_title("runs (solid); fixed-bed closed forms: laminar line (dotted), Blasius + minor losses (dashed)",
+    axes[0].set_title("runs (solid); fixed-bed closed forms: laminar line (dotted), wall friction + minor losses (dashed)",
                       fontsize=9)
     axes[1].set_ylabel("filter velocity Q / A_s (mm/s)")
     axes[2].set_ylabel("bed height (mm)")

@@ -573,6 +573,11 @@ private:
                 return;
             }
             s.forbid("area", "area_table gives the plan area at every level; use one or the other");
+            if (r.head < r.areaTable.front().first)
+                s.fail("area_table", "the first row's level " + number(r.areaTable.front().first) +
+                                         " m is above the initial head " + number(r.head) +
+                                         " m: the table must reach down to the reservoir's level (to the "
+                                         "tailwater, for a run that drains it)");
             r.area = PiecewiseLinear(r.areaTable)(r.head);  // the area at the start, for reports
         };
         switch (r.kind) {
@@ -726,11 +731,20 @@ namespace {
 /// An error the schema found, placed at the override that caused it: its key, or a key under it
 /// (a table set whole); an error elsewhere, in a case with overrides, lists them
 [[noreturn]] void blameOverride(const InputError& e, const std::vector<CaseOverride>& overrides) {
+    // the override of that very key first (the last one given wins, as in the file), then one
+    // under it (a key of a table the override set whole)
+    const CaseOverride* culprit = nullptr;
     for (const CaseOverride& o : overrides)
-        if (e.key() == o.key || e.key().rfind(o.key + ".", 0) == 0 || o.key.rfind(e.key() + ".", 0) == 0 ||
-            e.file().find(", " + o.text()) != std::string::npos)
-            throw InputError(e.file().find(", --set ") == std::string::npos ? e.file() + ", " + o.text() : e.file(),
-                             0, e.key(), e.detail());
+        if (e.key() == o.key) culprit = &o;
+    if (!culprit)
+        for (const CaseOverride& o : overrides)
+            if (e.key().rfind(o.key + ".", 0) == 0) culprit = &o;
+    // or the table an override made, misnamed (--set reservior.area=1: the unknown key is
+    // 'reservior'), which only an override can have put there
+    if (!culprit)
+        for (const CaseOverride& o : overrides)
+            if (o.key.rfind(e.key() + ".", 0) == 0 && e.detail().rfind("unknown key", 0) == 0) culprit = &o;
+    if (culprit) throw InputError(e.file() + ", " + culprit->text(), 0, e.key(), e.detail());
     std::string with;
     for (const CaseOverride& o : overrides) with += (with.empty() ? "" : ", ") + o.text();
     throw InputError(e.file(), e.line(), e.key(), e.detail() + " (with " + with + ")");

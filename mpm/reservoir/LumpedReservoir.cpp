@@ -46,6 +46,13 @@ void LumpedReservoir::advance(double t, double dt, double gateFlux) {
     // Explicit in the flux, but Q is the end-of-step gate flux of an implicit gate update, so
     // the level balance is exact for the volume that actually crossed the gate.
     head_ = shape_.levelAfter(head_, gateFlux * dt);
+    // below its lowest level (the table's first row, or the gate plane) the reservoir has run
+    // empty, which it does not model: stop rather than hold negative water
+    QS_CHECK(head_ >= shape_.lowestLevel(),
+             "lumped reservoir: at t = " << t + dt << " s the level fell to " << head_ << " m, below the reservoir's "
+             "lowest level " << shape_.lowestLevel() << " m (" << (shape_.isPrismatic() ? "the gate plane" : "reservoir.area_table's first row")
+             << "): the reservoir ran empty, which quicksand does not model; extend area_table down to the tailwater "
+                "or raise the head");
     lastFlux_ = gateFlux;
     meanFlux_ += (std::abs(gateFlux) - meanFlux_) * std::min(1.0, dt / kReynoldsAveraging);
     if (!p_.smoothPipeFriction && !reynoldsWarned_ && meanTubeReynolds() > kLaminarReynoldsLimit) {

@@ -31,6 +31,8 @@ public:
     /// m, the level after `volumeOut` (m3; negative: inflow) has left from level h
     double levelAfter(double h, double volumeOut) const;
     bool isPrismatic() const { return prismatic_; }
+    /// m, where the reservoir is empty: its table's first level (0, the gate plane, if prismatic)
+    double lowestLevel() const { return prismatic_ ? 0.0 : areaOf_.points().front().first; }
 
 private:
     bool prismatic_ = true;

@@ -39,7 +39,6 @@ std::vector<Real> DoublePointSolver<D>::sandFeeding() const {
 
 template <int D>
 ColumnState DoublePointSolver<D>::columnState() const {
-    const Real starved = starvedShare();
     ColumnState s;
     s.time = time_;
     s.gateFlux = gateFlux_;
@@ -55,13 +54,17 @@ ColumnState DoublePointSolver<D>::columnState() const {
         // q = n (v_L - v_S) on the grid, averaged over the section's nodes by footprint (the
         // part of each node's footprint inside the monitor's x and y ranges, if it has them); a
         // starved node's solid velocity counts with its fed weight (GridToPoints.cpp): at the sand's
-        // surface it is a force over a sliver of mass, and above it the flux is the water's
+        // surface it is a force over a sliver of mass, and above it the flux is the water's, so the
+        // rest counts as sand at rest there (not the fed neighbours' velocity, as the strain takes
+        // it: q is the water's flux through a section, where the sliver holds next to no grains).
+        // A dilute suspension (points more than a cell apart) starves nodes inside it too; q there
+        // reads the water's flux less the sliver's share of the grains' motion
         Real q = 0, a = 0;
         for (Index i = 0; i < grid_.numNodes(); ++i) {
             if (grid_.nodeCoords(i)[D - 1] != row || massL_[i] <= 0) continue;
             const Real w = nodeFootprint(grid_, i) * footprintShare(i, monitor.x, monitor.y);
             if (w <= 0) continue;
-            q += w * porosity_[i] * (velL_[i * D + D - 1] - fedWeight(i, starved) * velS_[i * D + D - 1]);
+            q += w * porosity_[i] * (velL_[i * D + D - 1] - fedWeight_[i * D + D - 1] * velS_[i * D + D - 1]);
             a += w;
         }
         s.monitorFlux.push_back(a > 0 ? q / a : 0.0);
@@ -129,7 +132,6 @@ void DoublePointSolver<D>::measureStates(ColumnState& s) const {
 
 template <int D>
 std::vector<CellRow> DoublePointSolver<D>::profile() const {
-    const Real starved = starvedShare();
     const Index rows = grid_.cells(D - 1);
     const Index perRow = grid_.numCells() / rows;
     std::vector<CellRow> out(rows);
@@ -173,7 +175,7 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         Real q = 0, a = 0;
         for (Index i = r * grid_.nodeStride(D - 1); i < (r + 1) * grid_.nodeStride(D - 1); ++i) {
             const Real wgt = nodeFootprint(grid_, i);
-            q += wgt * porosity_[i] * (velL_[i * D + D - 1] - fedWeight(i, starved) * velS_[i * D + D - 1]);
+            q += wgt * porosity_[i] * (velL_[i * D + D - 1] - fedWeight_[i * D + D - 1] * velS_[i * D + D - 1]);
             a += wgt;
         }
         row.filterVelocity = a > 0 ? q / a : 0.0;

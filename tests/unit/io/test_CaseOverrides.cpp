@@ -177,6 +177,8 @@ TEST(ReservoirTables, AreReadAndBadRowsAreRefusedNamingTheRow) {
     EXPECT_NE(zero.find("row 2: area = 0 m2 is out of range"), std::string::npos) << zero;
     const std::string one = reservoirError("model = \"lumped\"\nhead = 0.25\narea_table = [[0.1, 1e-4]]");
     EXPECT_NE(one.find("expected at least 2 rows [[level, area], ...]"), std::string::npos) << one;
+    const std::string above = reservoirError("model = \"lumped\"\nhead = 0.05\narea_table = [[0.1, 1e-4], [0.3, 2e-4]]");
+    EXPECT_NE(above.find("the first row's level 0.1 m is above the initial head 0.05 m"), std::string::npos) << above;
     const std::string schedule = reservoirError("head_schedule = [[0, 0.2], [0, 0.3]]");
     EXPECT_NE(schedule.find("row 2: time = 0 s does not follow row 1's 0"), std::string::npos) << schedule;
     const std::string headToo = reservoirError("head = 0.2\nhead_schedule = [[0, 0.2], [1, 0.3]]");

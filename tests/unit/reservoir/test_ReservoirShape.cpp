@@ -54,10 +54,17 @@ TEST(ReservoirShape, TheLumpedReservoirLosesExactlyTheGateVolume) {
     const ReservoirShape shape = ReservoirShape::table(p.areaTable);
     double out = 0;
     for (int k = 0; k < 1000; ++k) {
-        r.advance(k * 1e-3, 1e-3, 2e-4);  // m3/s
-        out += 2e-4 * 1e-3;
+        r.advance(k * 1e-3, 1e-3, 1e-4);  // m3/s: 1e-4 m3 in all, of the 1.13e-4 it holds
+        out += 1e-4 * 1e-3;
     }
+    EXPECT_GT(r.head(), 0.2) << "still inside the table";
+    EXPECT_LT(r.head(), 0.3) << "through the row at 0.3 m";
     EXPECT_NEAR(shape.volumeBelow(0.45) - shape.volumeBelow(r.head()), out, 1e-15);
+    // drawn further, it runs empty below its lowest row: an error, not negative water
+    auto drain = [&] {
+        for (int k = 0; k < 1000; ++k) r.advance(1 + k * 1e-3, 1e-3, 1e-4);
+    };
+    EXPECT_THROW(drain(), Error);
 }
 
 TEST(ConstantHeadSchedule, TheHeadFollowsItsRows) {

@@ -157,8 +157,8 @@ TEST(StarvedNodes, APointWellInsideItsCellStillStrainsWithBothNodes) {
     // a tenth of a cell past the plane the node above holds 0.1 of the point's mass, against
     // S = m_p (h / h)^2 from the point's one slope: more than the starved share, C^2 / 2 = 0.08 at
     // C = 0.4, so the point's gradient reads the node above in full, as before: 0.026 /s in this
-    // step. Scaled by w it would be (0.9 w + 0.1) 0.026 /s, below 0.02 /s for w < 0.78, which a
-    // starved share above 0.13 (more than C = 0.5 allows) would give.
+    // step. A starved share above 0.1 (more than C = 0.45 gives) would starve that node and
+    // complete its share with the fed node's velocity: the gradient would then fall below 0.02 /s.
     ColumnWithAPointPastTheSurface<1> column(0.1);
     ASSERT_LT(column.stressBefore, -10.0);
     column.solver->step();
