@@ -81,9 +81,13 @@ def plot_series(study):
     if drawn:
         axes[2].legend(fontsize=7, loc="best")
     fig.suptitle(f"study of {os.path.relpath(study.base, study.dir)}: {drawn} of {len(study.variants)} variants")
+    return save(fig, study, "study_series.png", 110)
+
+
+def save(fig, study, name, dpi):
     fig.tight_layout()
-    out = os.path.join(study.output, "study_series.png")
-    fig.savefig(out, dpi=110)
+    out = os.path.join(study.output, name)
+    fig.savefig(out, dpi=dpi)
     plt.close(fig)
     return out
 
@@ -133,11 +137,7 @@ def plot_figures(study):
             if j > 0:
                 axes[i][j].set_title(fname, fontsize=8)
     fig.suptitle("study.csv: each figure against each parameter")
-    fig.tight_layout()
-    out = os.path.join(study.output, "study_figures.png")
-    fig.savefig(out, dpi=100)
-    plt.close(fig)
-    return out
+    return save(fig, study, "study_figures.png", 100)
 
 
 def plot_study(study):

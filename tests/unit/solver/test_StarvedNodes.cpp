@@ -13,6 +13,7 @@
 #include <cstdio>
 #include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "io/CaseLoader.hpp"
@@ -91,6 +92,17 @@ struct ColumnWithAPointPastTheSurface {
         for (std::size_t p = 0; p < x.size() / D; ++p)
             if (x[p * D + D - 1] > x[best * D + D - 1]) best = p;
         return best;
+    }
+    /// Over `steps` steps: the copy's largest departure from its porosity, and its fastest
+    /// velocity gradient (1/s)
+    std::pair<double, double> watch(int steps) {
+        double worst = 0, fastest = 0;
+        for (int k = 0; k < steps; ++k) {
+            solver->step();
+            worst = std::max(worst, std::abs(solver->solid().porosity[top()] - porosityBefore));
+            fastest = std::max(fastest, gradient());
+        }
+        return {worst, fastest};
     }
     /// 1/s, the largest component of the copy's velocity gradient (APIC's C)
     double gradient() const {
@@ -172,13 +184,7 @@ TEST(StarvedNodes, ALonePointOverA2DBedStaysASkeletonInEveryComponent) {
     // side only, so a lateral gradient would show as well as the vertical one
     ColumnWithAPointPastTheSurface<2> column(1e-6, plane2D);
     ASSERT_LT(column.stressBefore, -10.0);
-    double worst = 0, fastest = 0;
-    for (int k = 0; k < 500; ++k) {
-        column.solver->step();
-        const std::size_t p = column.top();
-        worst = std::max(worst, std::abs(column.solver->solid().porosity[p] - column.porosityBefore));
-        fastest = std::max(fastest, column.gradient());
-    }
+    const auto [worst, fastest] = column.watch(500);
     EXPECT_LT(worst, 1e-4);
     EXPECT_LT(fastest, 1.0) << "1/s";
 }
@@ -186,13 +192,7 @@ TEST(StarvedNodes, ALonePointOverA2DBedStaysASkeletonInEveryComponent) {
 TEST(StarvedNodes, ALonePointOverA3DBedStaysASkeleton) {
     ColumnWithAPointPastTheSurface<3> column(1e-6, threeD);
     ASSERT_LT(column.stressBefore, -10.0);
-    double worst = 0, fastest = 0;
-    for (int k = 0; k < 200; ++k) {
-        column.solver->step();
-        const std::size_t p = column.top();
-        worst = std::max(worst, std::abs(column.solver->solid().porosity[p] - column.porosityBefore));
-        fastest = std::max(fastest, column.gradient());
-    }
+    const auto [worst, fastest] = column.watch(200);
     EXPECT_LT(worst, 1e-4);
     EXPECT_LT(fastest, 1.0) << "1/s";
 }
@@ -202,13 +202,7 @@ TEST(StarvedNodes, ALonePointWithUGimpShapesStaysASkeleton) {
     // this guards the other shape functions' path through the same code
     ColumnWithAPointPastTheSurface<1> column(1e-6, gimp);
     ASSERT_LT(column.stressBefore, -10.0);
-    double worst = 0, fastest = 0;
-    for (int k = 0; k < 500; ++k) {
-        column.solver->step();
-        const std::size_t p = column.top();
-        worst = std::max(worst, std::abs(column.solver->solid().porosity[p] - column.porosityBefore));
-        fastest = std::max(fastest, column.gradient());
-    }
+    const auto [worst, fastest] = column.watch(500);
     EXPECT_LT(worst, 1e-4);
     EXPECT_LT(fastest, 1.0) << "1/s";
 }
@@ -229,13 +223,7 @@ TEST(StarvedNodes, AStiffSkeletonBesideAStarvedNodeIsStable) {
     const double cSk = std::sqrt(Eoed / ((1 - n) * column.config.materials[0].grainDensity));
     ASSERT_GT(cSk / column.solver->waveSpeed(), 0.97) << "the skeleton's wave must be nearly the fastest";
     ASSERT_LT(column.stressBefore, -10.0);
-    double worst = 0, fastest = 0;
-    for (int k = 0; k < 500; ++k) {
-        column.solver->step();
-        const std::size_t p = column.top();
-        worst = std::max(worst, std::abs(column.solver->solid().porosity[p] - column.porosityBefore));
-        fastest = std::max(fastest, column.gradient());
-    }
+    const auto [worst, fastest] = column.watch(500);
     EXPECT_LT(worst, 1e-3);
     EXPECT_LT(fastest, 1.0) << "1/s";
 }
