@@ -4,6 +4,7 @@
 // nodes (averages over liquid points run about 1 % low under FLIP), the gradient from a linear
 // fit of the interior sand cells' pressures (the bottom and top sand cells excluded).
 #include <algorithm>
+#include <cmath>
 
 #include "boundary/Overflow.hpp"
 #include "solver/DoublePointSolver.hpp"
@@ -183,12 +184,49 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
     return out;
 }
 
+template <int D>
+SandCells DoublePointSolver<D>::sandCells() const {
+    SandCells s;
+    s.dimension = D;
+    for (int d = 0; d < D; ++d) s.cells[d] = grid_.cells(d);
+    s.h = grid_.h();
+    s.filterLevel = sandFloor_;
+    s.baseRow = sandBottomRow_;
+    s.axisymmetric = grid_.axisymmetric();
+    const Index cells = grid_.numCells();
+    s.state.assign(cells, CellSand::None);
+    s.porosity.assign(cells, std::nan(""));
+    for (Index c = 0; c < cells; ++c) {
+        if (solidCellStart_[c] == solidCellStart_[c + 1]) continue;
+        s.state[c] = cellFluidised_[c] ? CellSand::Fluidised : CellSand::Solid;
+        s.porosity[c] = cellSandPorosity_[c];
+    }
+    // the water crossing the filter plane per column: q = n (v_L - w v_S) at the base row's lower
+    // nodes (as the monitors read it), averaged over the cell's lower face, times its area
+    const Index columns = s.columns();
+    s.baseFlux.assign(columns, 0.0);
+    for (Index k = 0; k < columns; ++k) {
+        const Index c = sandBottomRow_ * columns + k;
+        Real q = 0;
+        int corners = 0;
+        grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
+            if ((corner >> (D - 1)) & 1) return;  // an upper node
+            q += porosity_[i] * (velL_[i * D + D - 1] - fedWeight_[i * D + D - 1] * velS_[i * D + D - 1]);
+            ++corners;
+        });
+        s.baseFlux[k] = q / corners * grid_.cellVolume(c) / grid_.h();
+    }
+    return s;
+}
+
 template ColumnState DoublePointSolver<1>::columnState() const;
 template ColumnState DoublePointSolver<2>::columnState() const;
 template ColumnState DoublePointSolver<3>::columnState() const;
 template std::vector<CellRow> DoublePointSolver<1>::profile() const;
 template std::vector<CellRow> DoublePointSolver<2>::profile() const;
 template std::vector<CellRow> DoublePointSolver<3>::profile() const;
+template SandCells DoublePointSolver<2>::sandCells() const;
+template SandCells DoublePointSolver<3>::sandCells() const;
 template std::vector<Real> DoublePointSolver<1>::sandFeeding() const;
 template std::vector<Real> DoublePointSolver<2>::sandFeeding() const;
 template std::vector<Real> DoublePointSolver<3>::sandFeeding() const;

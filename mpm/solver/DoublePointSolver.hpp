@@ -36,6 +36,7 @@
 #include "materials/ConstitutiveModel.hpp"
 #include "physics/LiquidStateRule.hpp"
 #include "physics/FrontDiffusion.hpp"
+#include "physics/Pipes.hpp"
 #include "physics/Permeability.hpp"
 #include "physics/SuspensionViscosity.hpp"
 #include "points/LiquidPoints.hpp"
@@ -115,6 +116,9 @@ public:
     const LiquidPoints<D>& liquid() const { return liquid_; }
     ColumnState columnState() const;
     std::vector<CellRow> profile() const;
+    /// The sand's state and porosity per cell and the water crossing the filter plane per column
+    /// of cells, as the pipe measurement reads them (physics/Pipes.hpp). 2D and 3D.
+    SandCells sandCells() const;
     /// Fastest wave speed used for the time step (m/s).
     Real waveSpeed() const { return waveSpeed_; }
     /// The share of its slope mass below which a node is starved: C^2 / 2, C = dt c_fast / h

@@ -14,6 +14,7 @@
 #include "core/Error.hpp"
 #include "io/Checkpoint.hpp"
 #include "io/FieldWriter.hpp"
+#include "io/PipesTable.hpp"
 #include "io/SeriesWriter.hpp"
 #include "coupling/CouplingScheme.hpp"
 #include "reservoir/ReservoirModel.hpp"
@@ -48,6 +49,20 @@ std::vector<double> seriesRow(const ColumnState& s) {
     return r;
 }
 
+/// The cells as a point set at their centres (2D, 3D): the sand's porosity and state per cell
+/// (0 no sand, 1 solid, 2 fluidised), the frames' and the pipes' view of the bed.
+template <int D>
+void writeCells(FieldWriter& writer, const Grid<D>& grid, const SandCells& cells) {
+    const Index count = grid.numCells();
+    std::vector<double> centres(count * D), state(count), porosity(cells.porosity.begin(), cells.porosity.end());
+    for (Index c = 0; c < count; ++c) {
+        const IVec<D> k = grid.cellCoords(c);
+        for (int d = 0; d < D; ++d) centres[c * D + d] = grid.cellCentre(k[d]);
+        state[c] = static_cast<double>(cells.state[c]);
+    }
+    writer.writePointSet("cells", count, centres.data(), {{"porosity", porosity.data(), 1}, {"state", state.data(), 1}});
+}
+
 template <int D>
 void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver) {
     const auto& s = solver.solid();
@@ -71,6 +86,7 @@ void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver) {
                           {"pore_pressure", l.pressure.data(), 1},
                           {"volume", l.volume.data(), 1},
                           {"state", lState.data(), 1}});
+    if constexpr (D > 1) writeCells(writer, solver.grid(), solver.sandCells());
     writer.endStep();
 }
 
@@ -244,10 +260,14 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
 
     std::unique_ptr<SeriesWriter> series;
     std::unique_ptr<FieldWriter> fields;
+    std::unique_ptr<SeriesWriter> pipes;
     if (options.writeFiles) {
         series = std::make_unique<SeriesWriter>((outDir / "series.csv").string(),
                                                 seriesColumns(config), options.resume,
                                                 solver.time());
+        if (D > 1)
+            pipes = std::make_unique<SeriesWriter>((outDir / "pipes.csv").string(), pipesColumns(D), options.resume,
+                                                   solver.time());
     }
 
     const double interval = config.time.outputInterval;
@@ -266,6 +286,15 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
         const ColumnState s = solver.columnState();
         if (series) series->write(seriesRow(s));
         if (fields) writeFields(*fields, solver);
+        if constexpr (D > 1) {
+            if (pipes || options.onPipes) {
+                const SandCells cells = solver.sandCells();
+                const PipeSurvey survey = findPipes(cells);
+                if (pipes)
+                    for (const auto& row : pipesRows(s.time, D, survey)) pipes->write(row);
+                if (options.onPipes) options.onPipes(s.time, cells, survey);
+            }
+        }
         reservoir.writeOutput(s.time);
         if (options.onOutput) options.onOutput(s, solver.profile());
     };

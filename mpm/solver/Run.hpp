@@ -9,7 +9,7 @@
 // iterations logged to output/coupling.log.
 //
 // Output goes to CASE/output (case key output.directory): series.csv every output interval,
-// fields.h5 + fields.xdmf, checkpoint.h5 at every checkpoint interval and at the end. A previous
+// fields.h5 + fields.xdmf, in 2D and 3D pipes.csv, checkpoint.h5 at every checkpoint interval and at the end. A previous
 // output directory is kept as output.previous; a run that fails before its first step (bad
 // input) never touches it. With resume = true the run continues from output/checkpoint.h5.
 #include <functional>
@@ -30,6 +30,9 @@ struct RunOptions {
     /// Called at every output time with the column's state and cell-row profile (tests watch a
     /// run through it).
     std::function<void(const ColumnState&, const std::vector<CellRow>&)> onOutput;
+    /// 2D and 3D: called at every output time with the cells' sand state and the pipes found in
+    /// it (physics/Pipes.hpp), as pipes.csv records them.
+    std::function<void(double time, const SandCells&, const PipeSurvey&)> onPipes;
     /// A windowed reservoir model to couple to instead of the case's reservoir (not owned; tests
     /// couple the InertialTubeModel this way). reservoir.model = "openfoam" makes one itself.
     WindowedModel* windowedModel = nullptr;
