@@ -9,6 +9,12 @@
 #   fluidisation.png  bed height, filter velocity with the analytic lines, the porosity along the
 #                     column against time with the fluidised region, the front with its fit
 #                     (plot_fluidisation.py; front_fit.csv holds the fit)
+# and for 2D and 3D runs (tools/plot_pipes.py; docs/piping.md):
+#   pipes_frames.png  a strip of frames through the run: porosity per cell, fluidised cells
+#                     outlined, pipes marked (3D: a vertical section through the main pipe and a
+#                     horizontal one at mid height)
+#   pipes.gif         the frames at every output time, animated
+#   pipes.png         number of pipes, their share of the water, heights, wall or interior
 # Expects a built quicksand (bash tools/build.sh); $QUICKSAND_BUILD_DIR as in build.sh.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -41,10 +47,14 @@ PY
 if [[ -f "$output_dir/fields.h5" ]]; then
     /usr/bin/python3 tools/plot_fluidisation.py "$output_dir"
 fi
+if [[ -f "$output_dir/pipes.csv" && -f "$output_dir/fields.h5" ]]; then
+    /usr/bin/python3 tools/plot_pipes.py "$output_dir"
+fi
 
 echo
 echo "Results of $case_dir:"
-for f in series.csv fields.h5 fields.xdmf checkpoint.h5 series.png profiles.png fluidisation.png front_fit.csv; do
+for f in series.csv pipes.csv fields.h5 fields.xdmf checkpoint.h5 series.png profiles.png fluidisation.png front_fit.csv \
+         pipes_frames.png pipes.png pipes.gif; do
     if [[ -e "$output_dir/$f" ]]; then
         echo "  $output_dir/$f"
     fi

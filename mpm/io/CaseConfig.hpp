@@ -136,6 +136,7 @@ struct PorosityFieldConfig {
     double standardDeviation = 0.0;  ///< -, of the porosity
     double correlationLength = 0.0;  ///< m
     std::uint64_t seed = 0;
+    bool mirror = false;             ///< the field reflected across x = width/2 (2D plane, 3D)
 };
 
 struct InitialConfig {

@@ -68,7 +68,7 @@ constexpr const char* kLiquidKeys[] = {"density",
 constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
 constexpr const char* kInitialKeys[] = {"state", "stress", "rigid_skeleton", "filter_velocity", "undrained_surcharge",
                                         "gravity_stage_duration", "gravity_stage_damping", "porosity_field"};
-constexpr const char* kPorosityFieldKeys[] = {"standard_deviation", "correlation_length", "seed"};
+constexpr const char* kPorosityFieldKeys[] = {"standard_deviation", "correlation_length", "seed", "mirror"};
 constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
 constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
 constexpr const char* kReservoirKeys[] = {
@@ -523,6 +523,11 @@ private:
             p.correlationLength = f.requiredNumber("correlation_length", positive("m"),
                                                    "distance over which the porosity is alike, m");
             p.seed = static_cast<std::uint64_t>(f.integer("seed", 1, between(0, false, 2147483647.0, false)));
+            p.mirror = f.boolean("mirror", false);
+            if (p.mirror && (c_.grid.dimension == 1 || c_.grid.geometry == GridGeometry::Axisymmetric))
+                f.fail("mirror", "a mirror image across the column's mid-plane x = width/2 needs a 2D plane or a 3D grid "
+                                 "(this one is " + std::string(c_.grid.dimension == 1 ? "1D" : "axisymmetric") +
+                                     "); remove mirror");
         }
     }
 

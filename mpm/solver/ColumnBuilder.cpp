@@ -134,7 +134,9 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
                       : std::nullopt;
     auto porosityAt = [&](const MaterialConfig& mc, const Vec<D>& x) -> Real {
         if (!randomField) return mc.porosity;
-        const Real n = mc.porosity + field.standardDeviation * randomField->unitField(&x[0]);
+        Vec<D> at = x;
+        if (field.mirror) at[0] = config.grid.width - x[0];  // the same bed seen from the other side
+        const Real n = mc.porosity + field.standardDeviation * randomField->unitField(&at[0]);
         return std::clamp(n, Real(mc.minPorosity), Real(mc.maxPorosity - 0.001));
     };
     Real chamberExcess = 0;  // excess pore pressure at the filter, shared by the chamber water

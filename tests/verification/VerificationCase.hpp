@@ -19,6 +19,8 @@ struct CaseRun {
     RunSummary summary;
     std::vector<ColumnState> series;
     std::vector<std::vector<CellRow>> profiles;  ///< one per output time
+    std::vector<SandCells> cells;                ///< 2D/3D: the cells' sand state per output time
+    std::vector<PipeSurvey> pipes;               ///< 2D/3D: the pipes found in them
 };
 
 inline CaseConfig loadVerificationCase(const std::string& name) {
@@ -37,6 +39,10 @@ inline CaseRun runVerificationCase(const std::string& name,
     options.onOutput = [&](const ColumnState& s, const std::vector<CellRow>& rows) {
         run.series.push_back(s);
         run.profiles.push_back(rows);
+    };
+    options.onPipes = [&](double, const SandCells& cells, const PipeSurvey& survey) {
+        run.cells.push_back(cells);
+        run.pipes.push_back(survey);
     };
     run.summary = runCase(run.config, options);
     return run;

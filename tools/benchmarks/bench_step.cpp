@@ -100,6 +100,31 @@ void BM_StepLateral(benchmark::State& state) {
 BENCHMARK_TEMPLATE(BM_StepLateral, 2)->Name("BM_Step2D")->Arg(50)->Arg(500)->Arg(5000)->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_StepLateral, 3)->Name("BM_Step3D")->Arg(49)->Arg(484)->Arg(5041)->Unit(benchmark::kMillisecond);
 
+/// The piping cases as shipped (cases/piping2D, cases/piping3D: random beds, Mohr-Coulomb, the
+/// lumped feed at i0 = 1.5), from their first steps. Counter sim_seconds_per_hour: the simulated
+/// time one hour of wall time reaches at this speed, the figure the step-size work is measured by
+/// (docs/performance.md, "Piping").
+template <int D>
+void BM_Piping(benchmark::State& state) {
+    const qs::CaseConfig c =
+        qs::loadCase(std::string(QUICKSAND_SOURCE_DIR) + (D == 2 ? "/cases/piping2D" : "/cases/piping3D"));
+    auto reservoir = qs::makeReservoirModel(c);
+    qs::DoublePointSolver<D> solver(c, *reservoir);
+    for (int k = 0; k < 20; ++k) solver.step();
+    double simulated = 0;
+    std::size_t updates = 0;
+    for (auto _ : state) {
+        solver.step();
+        simulated += solver.dt();
+        updates += solver.solid().size() + solver.liquid().size();
+    }
+    state.SetItemsProcessed(static_cast<int64_t>(updates));
+    state.counters["points"] = static_cast<double>(solver.solid().size() + solver.liquid().size());
+    state.counters["sim_seconds_per_hour"] = benchmark::Counter(3600 * simulated, benchmark::Counter::kIsRate);
+}
+BENCHMARK_TEMPLATE(BM_Piping, 2)->Name("BM_Piping2D")->Unit(benchmark::kMicrosecond)->MinTime(2.0);
+BENCHMARK_TEMPLATE(BM_Piping, 3)->Name("BM_Piping3D")->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
 /// The parallel regions of one step of BM_Step2D/50 and BM_Step3D/49 (callgrind's count of calls
 /// to GOMP_parallel over 60 steps: 1605, with the set-up's).
 constexpr int kPhasesPerStep = 26;
