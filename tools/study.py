@@ -122,6 +122,9 @@ def values_of(path, key, spec):
         if not isinstance(step, (int, float)) or step == 0 or (b - a) / step < 0:
             fail_key(path, f"{where}.step", f"expected a number that leads from {a} to {b}, got {step!r}")
         n = int(math.floor((b - a) / step + 1e-9)) + 1
+        # whole numbers stay whole (seeds, counts): the case's integer keys refuse 10.0
+        if all(isinstance(spec[k], int) and not isinstance(spec[k], bool) for k in ("from", "to", "step")):
+            return [spec["from"] + k * step for k in range(n)]
         return [a + k * step for k in range(n)]
     fail_key(path, where, f"expected a list of values or a range {{ from, to, count }}, got {spec!r}")
 

@@ -17,6 +17,14 @@ From a run's series.csv and case.effective.toml (docs/case-format.md):
                                  line through a fixed bed: exact) over u from 0.95 u0 down to 0.05 u0
   head_exponent, head_exponent_r2  fitted as du/dt = -a u^n (a turbulent line: n = 4/7 with Blasius'
                                  friction alone; 1 for a laminar one), over the same range
+and of a 2D or 3D run, from its pipes.csv (docs/piping.md):
+  first_pipe_time_s, first_pipe_gradient  the first output with a pipe, and the bed's gradient there
+  first_pipe_wall, first_pipe_x_m         whether that pipe touches a wall (1) or not (0), and its x
+  pipe_time_share                         the share of the outputs from the first pipe on with a pipe
+  wall_pipe_share                         of the outputs with a pipe, the share whose main pipe
+                                          (most water) touches a wall
+  max_pipes, max_pipe_flux_share          the most pipes at once, and the largest share of the
+                                          water one pipe carried
 A figure that does not apply (no fluidisation, a constant head; the head fits for a reservoir
 with an area_table, whose decay is neither law) is left empty.
 """
@@ -36,7 +44,9 @@ import numpy as np
 FIGURES = ["onset_time_s", "onset_gradient", "peak_gate_flux_m3s", "peak_filter_velocity_ms",
            "initial_bed_height_m", "peak_bed_height_m", "peak_expansion", "final_bed_height_m",
            "fluidised_duration_s", "resettle_time_s", "resettled_height_m", "sand_carried_out_kg",
-           "head_tau_s", "head_tau_r2", "head_exponent", "head_exponent_r2"]
+           "head_tau_s", "head_tau_r2", "head_exponent", "head_exponent_r2",
+           "first_pipe_time_s", "first_pipe_gradient", "first_pipe_wall", "first_pipe_x_m", "pipe_time_share",
+           "wall_pipe_share", "max_pipes", "max_pipe_flux_share"]
 
 
 def read_series(path):
@@ -125,7 +135,34 @@ def figures(output_dir):
         tail = column.get("overflow_level", column.get("water_level"))
         tau, r2, n, r2n = head_fits(t, s["reservoir_head"], tail)
         f.update(head_tau_s=tau, head_tau_r2=r2, head_exponent=n, head_exponent_r2=r2n)
+    f.update(pipe_figures(output_dir, s))
     return f
+
+
+def pipe_figures(output_dir, s):
+    """The pipes' figures from pipes.csv (2D, 3D); {} without one."""
+    path = os.path.join(output_dir, "pipes.csv")
+    if not os.path.isfile(path):
+        return {}
+    with open(path, newline="") as f:
+        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    main = {}  # time -> the line of its main pipe (pipe 1), or of no pipe
+    for r in rows:
+        if r["pipe"] <= 1:
+            main.setdefault(r["time"], r)
+    times = sorted(main)
+    piped = [t for t in times if main[t]["pipes"] > 0]
+    out = {"max_pipes": max((main[t]["pipes"] for t in times), default=0.0)}
+    if not piped:
+        return out
+    first = main[piped[0]]
+    k = int(np.argmin(np.abs(s["time"] - first["time"])))
+    out.update(first_pipe_time_s=first["time"], first_pipe_gradient=float(s["gradient"][k]),
+               first_pipe_wall=first["wall"], first_pipe_x_m=first["x"],
+               pipe_time_share=len(piped) / len([t for t in times if t >= piped[0]]),
+               wall_pipe_share=sum(main[t]["wall"] for t in piped) / len(piped),
+               max_pipe_flux_share=max(r["flux_share"] for r in rows if r["pipe"] > 0))
+    return out
 
 
 def cell(v):

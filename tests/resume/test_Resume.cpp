@@ -75,6 +75,37 @@ TEST(Resume, ResumedRunMatchesStraightRun) {
     for (std::size_t k = 0; k < la.size(); ++k) EXPECT_EQ(la[k], lb[k]) << "line " << k + 1;
 }
 
+TEST(Resume, A2DRunWithPipesResumesWithTheSamePipesCsv) {
+    // the random bed pipes from 3.25 s (docs/piping.md): stopped there, with a pipe in pipes.csv
+    // at the checkpoint's time, and resumed, pipes.csv goes on as in the straight run
+    RunOptions quiet;
+    quiet.quiet = true;
+    const fs::path straightDir = freshCopy("random_bed", "straight");
+    CaseConfig straight = loadCase(straightDir.string());
+    straight.time.end = 3.5;
+    runCase(straight, quiet);
+
+    const fs::path splitDir = freshCopy("random_bed", "split");
+    CaseConfig split = loadCase(splitDir.string());
+    split.time.end = 3.5;
+    split.time.checkpointInterval = 3.25;
+    RunOptions first = quiet;
+    first.endTime = 3.25;
+    runCase(split, first);
+    const auto before = lines(splitDir / "output/pipes.csv");
+    ASSERT_FALSE(before.empty());
+    EXPECT_EQ(before.back().rfind("3.24999", 0), 0u) << before.back();
+    EXPECT_EQ(before.back().find(",nan"), std::string::npos) << "a pipe at the checkpoint: " << before.back();
+    RunOptions resume = quiet;
+    resume.resume = true;
+    runCase(split, resume);
+
+    const auto la = lines(straightDir / "output/pipes.csv");
+    const auto lb = lines(splitDir / "output/pipes.csv");
+    ASSERT_EQ(la.size(), lb.size());
+    for (std::size_t k = 0; k < la.size(); ++k) EXPECT_EQ(la[k], lb[k]) << "line " << k + 1;
+}
+
 TEST(Resume, ResumeWithoutCheckpointIsAClearError) {
     const fs::path dir = freshCopy("geostatic", "nocheckpoint");
     CaseConfig c = loadCase(dir.string());
