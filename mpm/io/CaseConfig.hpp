@@ -71,7 +71,7 @@ struct MaterialConfig {
     double grainDensity = 2650.0;      ///< kg/m3, rho_s
     double porosity = 0.38;            ///< -, n0 in (0,1)
     double maxPorosity = 0.41;         ///< -, n_max in (n0, 1): liquid-state switch
-    double minPorosity = 0.32;         ///< -, n_min in (0, n0]: sizes injected liquid points
+    double minPorosity = 0.32;         ///< -, n_min in (0, n0]: the densest packing; sizes injected liquid points
     double youngsModulus = 1e6;        ///< Pa
     double poissonRatio = 0.3;         ///< -, in [0, 0.5)
     double frictionAngle = 30.0;       ///< degrees (MohrCoulomb)

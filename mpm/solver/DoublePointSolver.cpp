@@ -55,6 +55,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.name = m.name;
         s.grainDensity = m.grainDensity;
         s.maxPorosity = m.maxPorosity;
+        s.minPorosity = m.minPorosity;
         s.model = makeConstitutiveModel(m);
         s.suspension.waterViscosity = config.liquid.viscosity;
         s.suspension.maxPacking = 1 - m.minPorosity;

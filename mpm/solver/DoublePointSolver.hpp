@@ -52,6 +52,7 @@ struct SolidMaterial {
     std::string name;
     Real grainDensity = 0;
     Real maxPorosity = 0;
+    Real minPorosity = 0;                            ///< the densest packing: no skeleton is denser
     std::shared_ptr<const ConstitutiveModel> model;  ///< the skeleton's stress-strain law
     SuspensionViscosity suspension;                  ///< viscosity once fluidised
     Real frontDiffusivity = 0;                       ///< m2/s, D (physics/FrontDiffusion.hpp)

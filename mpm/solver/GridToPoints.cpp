@@ -154,6 +154,14 @@ void DoublePointSolver<D>::gridToPoints() {
         }
         n = 1 - (1 - n) / (1 + dVol);  // solid mass balance, grains incompressible
         solid_.volume[p] *= 1 + dVol;
+        // no skeleton denser than its densest packing: grains in contact at n_min cannot close up
+        // further (the grid's flow can push a skeleton there that no elastic law stiffens against:
+        // sand a pipe throws up converges into a column at the wall, docs/piping.md). The volume
+        // follows, the mass is the point's own
+        if (n < mat.minPorosity) {
+            n = mat.minPorosity;
+            solid_.volume[p] = solid_.mass[p] / (mat.grainDensity * (1 - n));
+        }
         const StressPoint point{dEps, s, solid_.internal.data() + p * solid_.internalCount, dt};
         solid_.stressReturn[p] = static_cast<int>(mat.model->update(point));
         // a resettling bed settles onto its sediment without stress until it reaches n_max,
