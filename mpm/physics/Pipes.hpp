@@ -13,9 +13,11 @@
 //       3. it rises: it is at least kMinimumRows cells tall (a flat patch on the filter is not a
 //          channel).
 // What is measured of each pipe:
-//   x, y        m, the centroid of its cells (in axisymmetry x is the radius)
-//   width       m, its mean horizontal extent: cells / rows x h in 2D; in 3D the diameter of the
-//               circle of its mean cross-section, sqrt(4 cells h^2 / (pi rows))
+//   x, y        m, the centroid of its cells, each cell counted once (in axisymmetry x is a radius,
+//               not weighted by it: a region off the axis is a ring, not a pipe)
+//   width       m, its mean horizontal extent: cells / rows x h in 2D (in axisymmetry a radial
+//               thickness); in 3D the diameter of the circle of its mean cross-section,
+//               sqrt(4 cells h^2 / (pi rows))
 //   height      m, the top of its highest cell above the filter
 //   wall        whether a cell of it lies against a side wall (the axis of an axisymmetric grid
 //               is not a wall)
@@ -33,7 +35,7 @@ namespace qs {
 enum class CellSand : std::int8_t { None = 0, Solid = 1, Fluidised = 2 };
 
 /// The grid's cells as the pipe measurement reads them: lexicographic, axis 0 fastest, the last
-/// axis vertical (as Grid<D>). In 2D cells[1] = 1 is not used: the vertical axis is cells[D - 1].
+/// axis vertical (as Grid<D>): in 2D cells[1] is the vertical axis and cells[2] is not used.
 struct SandCells {
     int dimension = 2;               ///< 2 or 3
     Index cells[3] = {1, 1, 1};      ///< cells per axis

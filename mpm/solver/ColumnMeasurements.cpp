@@ -202,19 +202,22 @@ SandCells DoublePointSolver<D>::sandCells() const {
         s.porosity[c] = cellSandPorosity_[c];
     }
     // the water crossing the filter plane per column: q = n (v_L - w v_S) at the base row's lower
-    // nodes (as the monitors read it), averaged over the cell's lower face, times its area
+    // nodes (as the monitors read it), each node weighted by its share of the cell's lower face
+    // (its share of the cell's volume: equal on plane grids, the outer node's larger in
+    // axisymmetry), times the face's area. The columns then add up to the section's flux.
+    // Sampled at nodes, a step in q between two zones is blended over the node on their edge
     const Index columns = s.columns();
     s.baseFlux.assign(columns, 0.0);
     for (Index k = 0; k < columns; ++k) {
         const Index c = sandBottomRow_ * columns + k;
-        Real q = 0;
-        int corners = 0;
+        Real q = 0, weight = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             if ((corner >> (D - 1)) & 1) return;  // an upper node
-            q += porosity_[i] * (velL_[i * D + D - 1] - fedWeight_[i * D + D - 1] * velS_[i * D + D - 1]);
-            ++corners;
+            const Real w = grid_.cellShare(c, corner);
+            q += w * porosity_[i] * (velL_[i * D + D - 1] - fedWeight_[i * D + D - 1] * velS_[i * D + D - 1]);
+            weight += w;
         });
-        s.baseFlux[k] = q / corners * grid_.cellVolume(c) / grid_.h();
+        s.baseFlux[k] = q / weight * grid_.cellVolume(c) / grid_.h();
     }
     return s;
 }

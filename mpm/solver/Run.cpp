@@ -64,7 +64,7 @@ void writeCells(FieldWriter& writer, const Grid<D>& grid, const SandCells& cells
 }
 
 template <int D>
-void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver) {
+void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver, const SandCells* cells) {
     const auto& s = solver.solid();
     const auto& l = solver.liquid();
     std::vector<double> sState(s.state.begin(), s.state.end());
@@ -86,7 +86,7 @@ void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver) {
                           {"pore_pressure", l.pressure.data(), 1},
                           {"volume", l.volume.data(), 1},
                           {"state", lState.data(), 1}});
-    if constexpr (D > 1) writeCells(writer, solver.grid(), solver.sandCells());
+    if (cells) writeCells(writer, solver.grid(), *cells);
     writer.endStep();
 }
 
@@ -285,15 +285,16 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     auto output = [&]() {
         const ColumnState s = solver.columnState();
         if (series) series->write(seriesRow(s));
-        if (fields) writeFields(*fields, solver);
-        if constexpr (D > 1) {
-            if (pipes || options.onPipes) {
-                const SandCells cells = solver.sandCells();
-                const PipeSurvey survey = findPipes(cells);
-                if (pipes)
-                    for (const auto& row : pipesRows(s.time, D, survey)) pipes->write(row);
-                if (options.onPipes) options.onPipes(s.time, cells, survey);
-            }
+        // 2D, 3D: the cells' sand state, once, for the fields, pipes.csv and the caller
+        std::optional<SandCells> cells;
+        if constexpr (D > 1)
+            if (fields || pipes || options.onPipes) cells = solver.sandCells();
+        if (fields) writeFields(*fields, solver, cells ? &*cells : nullptr);
+        if (cells && (pipes || options.onPipes)) {
+            const PipeSurvey survey = findPipes(*cells);
+            if (pipes)
+                for (const auto& row : pipesRows(s.time, D, survey)) pipes->write(row);
+            if (options.onPipes) options.onPipes(s.time, *cells, survey);
         }
         reservoir.writeOutput(s.time);
         if (options.onOutput) options.onOutput(s, solver.profile());

@@ -94,7 +94,7 @@ TEST(Resume, A2DRunWithPipesResumesWithTheSamePipesCsv) {
     runCase(split, first);
     const auto before = lines(splitDir / "output/pipes.csv");
     ASSERT_FALSE(before.empty());
-    EXPECT_EQ(before.back().rfind("3.24999", 0), 0u) << before.back();
+    EXPECT_NEAR(std::stod(before.back().substr(0, before.back().find(','))), 3.25, 1e-4) << before.back();
     EXPECT_EQ(before.back().find(",nan"), std::string::npos) << "a pipe at the checkpoint: " << before.back();
     RunOptions resume = quiet;
     resume.resume = true;
