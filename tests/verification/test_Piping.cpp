@@ -396,6 +396,7 @@ TEST(PipingConvergence, TheFirstPipeOfOneRandomBedAtTwoCellSizes) {
     ASSERT_GT(coarse.time, 0) << "no pipe on 9.3 mm cells";
     ASSERT_GT(fine.time, 0) << "no pipe on 6.2 mm cells";
     EXPECT_LT(std::abs(fine.gradient / coarse.gradient - 1), 0.03);
+    EXPECT_LT(std::abs(fine.gradient / coarse.gradient - 1), 0.015);  // guard: +0.78 % achieved
     std::printf("first pipe of the random bed: 9.3 mm at t = %.2f s, i = %.4f, x = %.1f mm%s; 6.2 mm at t = %.2f s, "
                 "i = %.4f, x = %.1f mm%s (%+.2f %%)\n",
                 coarse.time, coarse.gradient, 1e3 * coarse.x, coarse.wall ? " (wall)" : "", fine.time, fine.gradient,
