@@ -46,6 +46,7 @@ struct SandCells {
     std::vector<CellSand> state;     ///< per cell
     std::vector<Real> porosity;      ///< per cell, the sand's porosity (NaN where no sand)
     std::vector<Real> baseFlux;      ///< m3/s, per column of cells: water crossing the filter plane
+    std::vector<Real> surface;       ///< m, per column of cells: the top of its sand (NaN: none)
 
     Index columns() const { return dimension == 3 ? cells[0] * cells[1] : cells[0]; }
     Index rows() const { return cells[dimension - 1]; }

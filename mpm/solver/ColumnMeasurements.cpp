@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "boundary/Overflow.hpp"
+#include "boundary/Surcharge.hpp"
 #include "solver/DoublePointSolver.hpp"
 
 namespace qs {
@@ -218,6 +219,12 @@ SandCells DoublePointSolver<D>::sandCells() const {
             weight += w;
         });
         s.baseFlux[k] = q / weight * grid_.cellVolume(c) / grid_.h();
+    }
+    // the sand's top per column: where a stripe heaves against its neighbours, or a boil rises
+    s.surface.assign(columns, std::nan(""));
+    for (Index k = 0; k < columns; ++k) {
+        const ColumnSurface top = sandSurfaceOfColumn(grid_, solid_, solidCellStart_, k, config_.points.solidPerCell);
+        if (top.row >= 0) s.surface[k] = top.top;
     }
     return s;
 }

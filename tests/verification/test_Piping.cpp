@@ -3,10 +3,10 @@
 //     shares (fails if a wall or a sweep direction is favoured);
 //   - a loose stripe between dense sand, in the interior and against a wall: below onset each
 //     zone carries its own Darcy-Forchheimer flux at every height (the head is linear in z in
-//     both); raised slowly, the stripe fluidises first and past its own i_c (friction with the
-//     dense sand and the switch's wait for n_max hold it: docs/piping.md says what is not yet
-//     verified about the onset), the dense sand stays solid until the stripe pipes, and the
-//     stripe's pipe takes a larger share of the water.
+//     both); raised slowly, the stripe heaves at its own i_c (within 3 %), fluidises first and
+//     later (friction and the switch's wait for n_max: docs/piping.md says what is not yet
+//     verified there), the dense sand stays solid until the stripe pipes, and the stripe's pipe
+//     takes a larger share of the water.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -263,9 +263,54 @@ void checkStripe(const StripeRun& s, const char* where) {
     ASSERT_LT(piped, run.series.size()) << where << ": the stripe never piped";
     const double iOnset = gradientAt(onset), iBlock = blockBound(s), iBed = bedCriticalGradient(s);
     const double iOwn = criticalGradient(loose, c), iDense = criticalGradient(dense, c);
-    // friction with the dense sand, and the wait for n_max under a step held 0.5 s, hold it past
-    // its own i_c; where exactly is not verified yet (docs/piping.md)
+    // friction with the dense sand, and the wait for n_max under a step held 0.5 s, hold its
+    // fluidised state past its own i_c (docs/piping.md)
     EXPECT_GT(iOnset, iOwn) << where;
+
+    // 2b. Its heave: the stripe's top rising against the dense sand's, the lab's criterion. Over
+    //     each hold, the rise of the stripe's mean surface less the dense sand's; the stripe heaves
+    //     when it exceeds 5 um, about 15 times the elastic swelling one step of 0.01 causes
+    //     (0.01 gamma_w H / 2 over E_oed, times H: 0.3 um). Its top carries no overburden, so no
+    //     friction holds it: it heaves at its own i_c
+    auto relativeTop = [&](std::size_t k) {
+        const SandCells& cells = run.cells[k];
+        double stripe = 0, dense = 0;
+        int ns = 0, nd = 0;
+        for (Index col = 0; col < cells.columns(); ++col) {
+            if (inStripe(cells, col)) { stripe += cells.surface[col]; ++ns; }
+            else { dense += cells.surface[col]; ++nd; }
+        }
+        return stripe / ns - dense / nd;
+    };
+    auto denseTop = [&](std::size_t k) {
+        const SandCells& cells = run.cells[k];
+        double dense = 0;
+        int nd = 0;
+        for (Index col = 0; col < cells.columns(); ++col)
+            if (!inStripe(cells, col)) { dense += cells.surface[col]; ++nd; }
+        return dense / nd;
+    };
+    double iHeave = 0, iHeld = 0, heaveRise = 0, denseRise = 0;
+    for (std::size_t first = 0; first < run.series.size();) {
+        std::size_t last = first;
+        while (last + 1 < run.series.size() && run.series[last + 1].reservoirHead == run.series[first].reservoirHead) ++last;
+        if (run.series[first].time >= 3.0 && last > first) {
+            const double rise = relativeTop(last) - relativeTop(first);
+            if (rise > 5e-6) {
+                iHeave = gradientAt(first);
+                heaveRise = rise;
+                denseRise = denseTop(last) - denseTop(first);
+                break;
+            }
+            iHeld = gradientAt(first);
+        }
+        first = last + 1;
+    }
+    ASSERT_GT(iHeave, 0) << where << ": the stripe never heaved";
+    EXPECT_LT(std::abs(iHeave / iOwn - 1), 0.03) << where;
+    EXPECT_LT(iHeld, iOwn) << where;      // it held at the step below its own i_c
+    EXPECT_LT(denseRise, 5e-6) << where;  // the dense sand did not heave with it
+    EXPECT_LT(iHeave, iOnset) << where;   // it heaves before the switch sees it fluidised
 
     // 3. The pipe: where the stripe is, interior or at the wall; its share of the water rises
     const Pipe& pipe = run.pipes[piped].pipes.front();
@@ -278,11 +323,13 @@ void checkStripe(const StripeRun& s, const char* where) {
     EXPECT_GT(shareAfter, 1.2 * shareBefore) << where;  // 1.31 (interior) and 1.52 (wall) achieved
     const double b = s.to - s.from, W = c.grid.width;
     std::printf("loose stripe (%s): below onset each zone within %.2f %% of its own flux (dense %.3e, loose %.3e m/s), "
-                "stripe's share within %.2f %% of %.3f (the true share %.3f); first fluidised at i = %.2f (t = %.2f s, "
+                "stripe's share within %.2f %% of %.3f (the true share %.3f); held at i = %.2f, heaves at i = %.2f (%.1f um in the "
+                "hold, the dense sand %.1f um: %+.2f %% of its own i_c); first fluidised at i = %.2f (t = %.2f s, "
                 "rows %lld to %lld), own i_c %.3f, dense i_c %.3f, the bed's %.4f, the block's bound %.4f; piped at t = "
                 "%.2f s, share %.3f = %.2f x before\n",
                 where, 100 * worst, qDense, qLoose, 100 * worstShare, shareBefore,
-                qLoose * b / (qLoose * b + qDense * (W - b)), iOnset, run.series[onset].time,
+                qLoose * b / (qLoose * b + qDense * (W - b)), iHeld, iHeave, 1e6 * heaveRise, 1e6 * denseRise,
+                100 * (iHeave / iOwn - 1), iOnset, run.series[onset].time,
                 static_cast<long long>(lowestRow), static_cast<long long>(highestRow), iOwn, iDense, iBed, iBlock,
                 run.series[piped].time, shareAfter, shareAfter / shareBefore);
 }
