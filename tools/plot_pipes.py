@@ -111,8 +111,9 @@ def draw_frame(axes_row, dimension, frame, pipes, limits, window):
     j = int(np.argmin(np.abs(ys - y)))
     k = (lo + hi) // 2
     image = draw_section(axes_row[0], xs, zs[zcut], porosity[zcut, j, :], state[zcut, j, :], limits,
-                         f"t = {time:.2f} s, y = {ys[j] * 1e3:.0f} mm")
-    draw_section(axes_row[1], xs, ys, porosity[k], state[k], limits, f"z = {zs[k] * 1e3:.0f} mm, {len(here)} pipes")
+                         f"t = {time:.2f} s\ny = {ys[j] * 1e3:.0f} mm")
+    draw_section(axes_row[1], xs, ys, porosity[k], state[k], limits,
+                 f"z = {zs[k] * 1e3:.0f} mm\n{len(here)} pipe{'s' if len(here) != 1 else ''}")
     for p in here:
         axes_row[1].plot(p["x"] * 1e3, p["y"] * 1e3, "x", color="red", ms=6)
     return image
@@ -126,7 +127,12 @@ def porosity_limits(frames):
 def strip(out, dimension, frames, pipes, count, limits):
     picks = sorted(set(np.linspace(0, len(frames) - 1, min(count, len(frames))).round().astype(int)))
     sections = 1 if dimension == 2 else 2
-    fig, axes = plt.subplots(sections, len(picks), figsize=(1.6 * len(picks) + 1.2, 4.2 * sections), squeeze=False)
+    # in 3D the horizontal sections are as tall as the column is wide
+    _, _, _, (xs, ys, zs) = frames[0]
+    lo, hi, zcut = sand_window(frames)
+    heights = [1.0] if dimension == 2 else [len(zs[zcut]), len(ys)]
+    fig, axes = plt.subplots(sections, len(picks), figsize=(1.6 * len(picks) + 1.2, 4.2 if dimension == 2 else 6.0),
+                             squeeze=False, gridspec_kw={"height_ratios": heights})
     for c, i in enumerate(picks):
         image = draw_frame(axes[:, c], dimension, frames[i], pipes, limits, sand_window(frames))
         for r in range(sections):
