@@ -39,6 +39,14 @@ std::vector<std::string> lines(const fs::path& p) {
     return out;
 }
 
+/// A resumed run's file equals the straight run's, line by line.
+void expectSameLines(const fs::path& straight, const fs::path& resumed) {
+    const auto la = lines(straight);
+    const auto lb = lines(resumed);
+    ASSERT_EQ(la.size(), lb.size());
+    for (std::size_t k = 0; k < la.size(); ++k) EXPECT_EQ(la[k], lb[k]) << resumed << " line " << k + 1;
+}
+
 }  // namespace
 
 TEST(Resume, ResumedRunMatchesStraightRun) {
@@ -69,10 +77,7 @@ TEST(Resume, ResumedRunMatchesStraightRun) {
     EXPECT_EQ(a.final.liquidPoints, b.final.liquidPoints);
 
     // the series of the resumed run equals the straight one line by line
-    const auto la = lines(straightDir / "output/series.csv");
-    const auto lb = lines(splitDir / "output/series.csv");
-    ASSERT_EQ(la.size(), lb.size());
-    for (std::size_t k = 0; k < la.size(); ++k) EXPECT_EQ(la[k], lb[k]) << "line " << k + 1;
+    expectSameLines(straightDir / "output/series.csv", splitDir / "output/series.csv");
 }
 
 TEST(Resume, A2DRunWithPipesResumesWithTheSamePipesCsv) {
@@ -100,10 +105,7 @@ TEST(Resume, A2DRunWithPipesResumesWithTheSamePipesCsv) {
     resume.resume = true;
     runCase(split, resume);
 
-    const auto la = lines(straightDir / "output/pipes.csv");
-    const auto lb = lines(splitDir / "output/pipes.csv");
-    ASSERT_EQ(la.size(), lb.size());
-    for (std::size_t k = 0; k < la.size(); ++k) EXPECT_EQ(la[k], lb[k]) << "line " << k + 1;
+    expectSameLines(straightDir / "output/pipes.csv", splitDir / "output/pipes.csv");
 }
 
 TEST(Resume, ResumeWithoutCheckpointIsAClearError) {

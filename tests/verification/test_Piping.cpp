@@ -13,6 +13,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "VerificationCase.hpp"
@@ -272,7 +273,8 @@ void checkStripe(const StripeRun& s, const char* where) {
     //     when it exceeds 5 um, about 15 times the elastic swelling one step of 0.01 causes
     //     (0.01 gamma_w H / 2 over E_oed, times H: 0.3 um). Its top carries no overburden, so no
     //     friction holds it: it heaves at its own i_c
-    auto relativeTop = [&](std::size_t k) {
+    // the mean sand surface over the stripe's columns and over the dense sand's, at output k
+    auto tops = [&](std::size_t k) {
         const SandCells& cells = run.cells[k];
         double stripe = 0, dense = 0;
         int ns = 0, nd = 0;
@@ -280,16 +282,10 @@ void checkStripe(const StripeRun& s, const char* where) {
             if (inStripe(cells, col)) { stripe += cells.surface[col]; ++ns; }
             else { dense += cells.surface[col]; ++nd; }
         }
-        return stripe / ns - dense / nd;
+        return std::make_pair(stripe / ns, dense / nd);
     };
-    auto denseTop = [&](std::size_t k) {
-        const SandCells& cells = run.cells[k];
-        double dense = 0;
-        int nd = 0;
-        for (Index col = 0; col < cells.columns(); ++col)
-            if (!inStripe(cells, col)) { dense += cells.surface[col]; ++nd; }
-        return dense / nd;
-    };
+    auto relativeTop = [&](std::size_t k) { const auto t = tops(k); return t.first - t.second; };
+    auto denseTop = [&](std::size_t k) { return tops(k).second; };
     double iHeave = 0, iHeld = 0, heaveRise = 0, denseRise = 0;
     for (std::size_t first = 0; first < run.series.size();) {
         std::size_t last = first;
