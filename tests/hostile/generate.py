@@ -78,6 +78,10 @@ CASES = {
     "grain_density_zero": (sub("grain_density = 2650", "grain_density = 0"), "check", "-", ["grain_density"]),
     "youngs_modulus_negative": (sub("youngs_modulus = 1.0e6", "youngs_modulus = -1.0e6"), "check", "-", ["youngs_modulus"]),
     "poisson_ratio_half": (sub("poisson_ratio = 0.3", "poisson_ratio = 0.5"), "check", "-", ["poisson_ratio"]),
+    # a mirror image needs a mid-plane: 2D plane or 3D
+    "porosity_field_mirror_in_1d": (BASE + "\n[initial.porosity_field]\nstandard_deviation = 0.01\n"
+                                    "correlation_length = 0.01\nmirror = true\n", "check|run", "-",
+                                    ["initial.porosity_field.mirror", "needs a 2D plane or a 3D grid", "1D"]),
     "gravity_negative": (sub("gravity = 9.81", "gravity = -9.81"), "check", "-", ["gravity"]),
     "courant_too_large": (BASE.replace("end = 0.5", "end = 0.5\ncourant = 0.9"), "check", "-", ["time.courant"]),
     "time_end_negative": (sub("end = 0.5", "end = -0.5"), "check", "-", ["time.end"]),
