@@ -81,25 +81,30 @@ TEST(Resume, ResumedRunMatchesStraightRun) {
 }
 
 TEST(Resume, A2DRunWithPipesResumesWithTheSamePipesCsv) {
-    // the random bed pipes from 3.25 s (docs/piping.md): stopped there, with a pipe in pipes.csv
-    // at the checkpoint's time, and resumed, pipes.csv goes on as in the straight run
+    // the random bed with sd 0.02, seed 5, pipes from 0.25 s (cases/studies/pipingSeeds): stopped at
+    // 0.5 s, with a pipe in pipes.csv at the checkpoint's time, and resumed, pipes.csv goes on as in
+    // the straight run
     RunOptions quiet;
     quiet.quiet = true;
+    auto bed = [](const fs::path& dir) {
+        CaseConfig c = loadCase(dir.string());
+        c.initial.porosityField.standardDeviation = 0.02;
+        c.initial.porosityField.seed = 5;
+        c.time.end = 0.75;
+        return c;
+    };
     const fs::path straightDir = freshCopy("random_bed", "straight");
-    CaseConfig straight = loadCase(straightDir.string());
-    straight.time.end = 3.5;
-    runCase(straight, quiet);
+    runCase(bed(straightDir), quiet);
 
     const fs::path splitDir = freshCopy("random_bed", "split");
-    CaseConfig split = loadCase(splitDir.string());
-    split.time.end = 3.5;
-    split.time.checkpointInterval = 3.25;
+    CaseConfig split = bed(splitDir);
+    split.time.checkpointInterval = 0.5;
     RunOptions first = quiet;
-    first.endTime = 3.25;
+    first.endTime = 0.5;
     runCase(split, first);
     const auto before = lines(splitDir / "output/pipes.csv");
     ASSERT_FALSE(before.empty());
-    EXPECT_NEAR(std::stod(before.back().substr(0, before.back().find(','))), 3.25, 1e-4) << before.back();
+    EXPECT_NEAR(std::stod(before.back().substr(0, before.back().find(','))), 0.5, 1e-4) << before.back();
     EXPECT_EQ(before.back().find(",nan"), std::string::npos) << "a pipe at the checkpoint: " << before.back();
     RunOptions resume = quiet;
     resume.resume = true;
