@@ -6,7 +6,8 @@
 //
 //   time                  s
 //   pipes                 -, the number of pipes now
-//   fluidised_flux_share  -, share of the water crossing the filter through fluidised base cells
+//   fluidised_flux_share  -, share of the water crossing the filter through open base cells
+//                         (fluidised, or a pocket of water: physics/Pipes.hpp)
 //   pipe                  -, 1.. (0: none)
 //   x, y                  m, the pipe's centroid (y in 3D only; x is the radius in axisymmetry)
 //   width, height         m, mean width (3D: equivalent diameter) and top above the filter

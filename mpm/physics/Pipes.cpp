@@ -9,17 +9,34 @@ namespace qs {
 
 namespace {
 
-/// Labels the fluidised cells by connected region (face neighbours), -1 elsewhere; returns the
+/// Whether a cell is open to the water's flow through the bed: fluidised, or a pocket of water,
+/// a cell with no sand at or above the filter under its column's sand surface. When a pipe empties
+/// the sand from its base the pocket is still the channel's foot (piping2D's left wall, 8 to
+/// 11.5 s, was missed without it). The chamber below the filter and the free water above the
+/// sand are not pockets.
+bool isOpen(const SandCells& s, Index c) {
+    if (s.state[c] == CellSand::Fluidised) return true;
+    if (s.state[c] != CellSand::None) return false;
+    const Index columns = s.columns(), row = c / columns;
+    if (row < s.baseRow) return false;
+    const Real top = s.surface.empty() ? Real(NAN) : s.surface[c % columns];
+    const Real cellTop = (row + 1) * s.h;
+    return std::isfinite(top) && cellTop <= top + 1e-9 * s.h;
+}
+
+/// Labels the open cells (isOpen) by connected region (face neighbours), -1 elsewhere; returns the
 /// number of regions. An explicit stack, not recursion: a region may hold every cell of the grid.
 Index labelRegions(const SandCells& s, std::vector<Index>& label) {
     const int D = s.dimension;
     const Index total = static_cast<Index>(s.state.size());
     label.assign(total, -1);
+    std::vector<char> open(total);
+    for (Index c = 0; c < total; ++c) open[c] = isOpen(s, c);
     Index stride[3] = {1, s.cells[0], D == 3 ? s.cells[0] * s.cells[1] : s.cells[0]};
     std::vector<Index> stack;
     Index regions = 0;
     for (Index start = 0; start < total; ++start) {
-        if (s.state[start] != CellSand::Fluidised || label[start] >= 0) continue;
+        if (!open[start] || label[start] >= 0) continue;
         label[start] = regions;
         stack.push_back(start);
         while (!stack.empty()) {
@@ -33,7 +50,7 @@ Index labelRegions(const SandCells& s, std::vector<Index>& label) {
                     const Index kn = k + side;
                     if (kn < 0 || kn >= s.cells[d]) continue;
                     const Index n = c + side * stride[d];
-                    if (s.state[n] == CellSand::Fluidised && label[n] < 0) {
+                    if (open[n] && label[n] < 0) {
                         label[n] = regions;
                         stack.push_back(n);
                     }
@@ -58,10 +75,10 @@ PipeSurvey findPipes(const SandCells& s) {
     Real totalFlux = 0, fluidisedFlux = 0;
     bool solidAtBase = false;
     for (Index k = 0; k < columns; ++k) {
-        const CellSand base = s.state[s.cell(k, s.baseRow)];
+        const Index base = s.cell(k, s.baseRow);
         totalFlux += s.baseFlux[k];
-        if (base == CellSand::Fluidised) fluidisedFlux += s.baseFlux[k];
-        if (base == CellSand::Solid) solidAtBase = true;
+        if (isOpen(s, base)) fluidisedFlux += s.baseFlux[k];
+        if (s.state[base] == CellSand::Solid) solidAtBase = true;
     }
     auto share = [&](Real flux) { return totalFlux > 0 ? flux / totalFlux : Real(0); };
     survey.fluidisedFluxShare = share(fluidisedFlux);
@@ -69,7 +86,7 @@ PipeSurvey findPipes(const SandCells& s) {
 
     struct Tally {
         bool fromFilter = false, wall = false;
-        Index count = 0, lowRow = -1, highRow = -1;
+        Index count = 0, fluidised = 0, lowRow = -1, highRow = -1;
         Real sumX = 0, sumY = 0, baseFlux = 0;
     };
     std::vector<Tally> tally(regions);
@@ -80,6 +97,7 @@ PipeSurvey findPipes(const SandCells& s) {
         const Index column = c % columns, row = c / columns;
         const Index i = column % s.cells[0], j = D == 3 ? column / s.cells[0] : 0;
         ++t.count;
+        if (s.state[c] == CellSand::Fluidised) ++t.fluidised;
         t.sumX += (i + 0.5) * s.h;
         t.sumY += (j + 0.5) * s.h;
         t.lowRow = t.lowRow < 0 ? row : std::min(t.lowRow, row);
@@ -93,7 +111,8 @@ PipeSurvey findPipes(const SandCells& s) {
     }
     for (const Tally& t : tally) {
         const Index tall = t.highRow - s.baseRow + 1;
-        if (!t.fromFilter || tall < kMinimumPipeRows) continue;
+        // a pocket of water with no fluidised sand is a cavity under solid sand, not a pipe
+        if (!t.fromFilter || tall < kMinimumPipeRows || t.fluidised == 0) continue;
         Pipe p;
         p.cellCount = t.count;
         p.x = t.sumX / t.count;

@@ -4,8 +4,11 @@
 // The reference column did not fluidise evenly: it piped. A pipe is what the lab saw, a fluidised
 // channel rising from the filter through sand that stays solid beside it. On the grid:
 //   - a cell is fluidised, solid, or holds no sand (the liquid-state switch's per-cell state);
-//   - a fluidised region is a set of fluidised cells connected through their faces (4 neighbours
-//     in 2D, 6 in 3D; cells touching only at an edge or a corner are not connected);
+//   - a cell is open when it is fluidised or a pocket of water: no sand, at or above the filter,
+//     under its column's sand surface (the foot of a pipe that has emptied its base);
+//   - a fluidised region is a set of open cells connected through their faces (4 neighbours in
+//     2D, 6 in 3D; cells touching only at an edge or a corner are not connected), at least one of
+//     them fluidised (a pocket alone is a cavity under solid sand);
 //   - a region is a pipe when
 //       1. it rises from the filter: one of its cells is in the base row (the cells on the filter),
 //       2. it is localised: the base row still holds solid sand (a region spanning the whole base
@@ -23,7 +26,7 @@
 //               is not a wall)
 //   flux share  the share of the water crossing the filter plane that enters through its base
 //               cells
-// and of the whole bed, the share entering through every fluidised base cell (pipe or not).
+// and of the whole bed, the share entering through every open base cell (pipe or not).
 #include <cstdint>
 #include <vector>
 
@@ -46,7 +49,7 @@ struct SandCells {
     std::vector<CellSand> state;     ///< per cell
     std::vector<Real> porosity;      ///< per cell, the sand's porosity (NaN where no sand)
     std::vector<Real> baseFlux;      ///< m3/s, per column of cells: water crossing the filter plane
-    std::vector<Real> surface;       ///< m, per column of cells: the top of its sand (NaN: none)
+    std::vector<Real> surface;       ///< m, per column of cells: the top of its sand (NaN: none; empty: no pockets)
 
     Index columns() const { return dimension == 3 ? cells[0] * cells[1] : cells[0]; }
     Index rows() const { return cells[dimension - 1]; }
@@ -64,7 +67,7 @@ struct Pipe {
 
 struct PipeSurvey {
     std::vector<Pipe> pipes;        ///< largest flux share first
-    Real fluidisedFluxShare = 0;    ///< -, through every fluidised base cell
+    Real fluidisedFluxShare = 0;    ///< -, through every open base cell (fluidised or a pocket)
 };
 
 /// Shortest pipe, in cells.

@@ -27,7 +27,12 @@ SandCells solidBed(int dimension, Index nx, Index ny, Index rows, Index sandRows
     for (Index r = 1; r <= sandRows; ++r)
         for (Index k = 0; k < s.columns(); ++k) s.state[s.cell(k, r)] = CellSand::Solid;
     s.baseFlux.assign(s.columns(), 1e-6);
+    s.surface.assign(s.columns(), s.filterLevel + sandRows * s.h);
     return s;
+}
+
+void empty(SandCells& s, Index column, Index fromRow, Index toRow) {
+    for (Index r = fromRow; r <= toRow; ++r) s.state[s.cell(column, r)] = CellSand::None;
 }
 
 void fluidise(SandCells& s, Index column, Index fromRow, Index toRow) {
@@ -82,6 +87,36 @@ TEST(Pipes, ABedFluidisedAcrossItsBaseHasNoPipe) {
     const PipeSurvey solid = findPipes(solidBed(2, 6, 1, 12, 10));
     EXPECT_TRUE(solid.pipes.empty());
     EXPECT_EQ(solid.fluidisedFluxShare, 0.0);
+}
+
+TEST(Pipes, APipeWhoseFootIsAPocketOfWaterIsStillAPipeAndAPocketAloneIsNot) {
+    // 8 columns, 10 sand rows:
+    //   column 0, rows 1-2 without sand (its base emptied), rows 3-7 fluidised: a wall pipe whose
+    //     foot is a pocket of water, 7 cells tall
+    //   column 4, rows 1-2 without sand under solid sand: a cavity, not a pipe
+    //   column 6, its sand washed out above row 3 (surface at row 3's top): rows 4 and up hold
+    //     free water, not a pocket; row 1-3 solid: nothing
+    SandCells s = solidBed(2, 8, 1, 14, 10);
+    empty(s, 0, 1, 2);
+    fluidise(s, 0, 3, 7);
+    empty(s, 4, 1, 2);
+    empty(s, 6, 4, 10);
+    s.surface[6] = s.filterLevel + 3 * s.h;
+    s.baseFlux[0] = 4e-6;  // total 11e-6
+    const PipeSurvey survey = findPipes(s);
+    ASSERT_EQ(survey.pipes.size(), 1u);
+    const Pipe& p = survey.pipes[0];
+    EXPECT_EQ(p.cellCount, 7);
+    EXPECT_NEAR(p.x, 0.005, 1e-12);
+    EXPECT_NEAR(p.height, 0.07, 1e-12);
+    EXPECT_TRUE(p.wall);
+    EXPECT_NEAR(p.fluxShare, 4.0 / 11, 1e-12);
+    // the open base cells: the pipe's pocket and the cavity
+    EXPECT_NEAR(survey.fluidisedFluxShare, 5.0 / 11, 1e-12);
+    // without the columns' surfaces nothing is a pocket: the fluidised part no longer touches
+    // the filter, and no pipe is found
+    s.surface.clear();
+    EXPECT_TRUE(findPipes(s).pipes.empty());
 }
 
 TEST(Pipes, InThreeDimensionsWidthIsTheDiameterOfTheMeanSectionAndEveryWallCounts) {
