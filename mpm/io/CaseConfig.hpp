@@ -122,6 +122,7 @@ struct LiquidConfig {
     bool freeSurfaceZeroPressure = false;  ///< set p = 0 on free-surface liquid points
     double freeSurfaceFilling = 0.9;   ///< -, filling ratio below which a top cell is free surface
     bool gridLiquidMass = true;        ///< nodal liquid mass rho_L n_i V_i below the free surface
+    double picShare = 0.0;             ///< -, share of the grid's velocity (PIC) in the liquid points' each step
 };
 
 struct PointsConfig {

@@ -64,7 +64,8 @@ constexpr const char* kLiquidKeys[] = {"density",
                                        "cavitation_pressure",
                                        "free_surface_zero_pressure",
                                        "free_surface_filling",
-                                       "grid_liquid_mass"};
+                                       "grid_liquid_mass",
+                                       "pic_share"};
 constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
 constexpr const char* kInitialKeys[] = {"state", "stress", "rigid_skeleton", "filter_velocity", "undrained_surcharge",
                                         "gravity_stage_duration", "gravity_stage_damping", "porosity_field"};
@@ -301,6 +302,8 @@ private:
         l.freeSurfaceFilling =
             s.optionalNumber("free_surface_filling", 0.9, between(0, true, 1, false));
         l.gridLiquidMass = s.boolean("grid_liquid_mass", true);
+        l.picShare = s.optionalNumber("pic_share", 0.0, between(0, false, 0.5, false),
+                                      "a share per step: 0 (FLIP, the verified default) to 0.5; 0.01 is usual");
     }
 
     void readMaterials(const Section& root) {

@@ -21,6 +21,7 @@ namespace qs {
 template <int D>
 void DoublePointSolver<D>::gridToPoints() {
     const Real dt = dt_;
+    const Real picShare = config_.liquid.picShare;
     Real lowest[D] = {}, extent[D];  // points stay inside the grid, axis by axis
     for (int d = 0; d < D; ++d) extent[d] = grid_.cells(d) * grid_.h();
     const bool axisymmetric = grid_.axisymmetric();
@@ -202,6 +203,10 @@ void DoublePointSolver<D>::gridToPoints() {
         if (axisymmetric) div += vNew[0] / liquid_.x[p * D];  // the hoop strain rate v_r / r
         for (int d = 0; d < D; ++d) {
             liquid_.v[p * D + d] += dv[d];  // FLIP
+            // with liquid.pic_share a share of the grid's own velocity (PIC): it damps the
+            // velocities of points that the grid cannot see, which FLIP keeps and nothing else
+            // in the free water dissipates (docs/piping.md, "The free water over a boil")
+            liquid_.v[p * D + d] += picShare * (vNew[d] - liquid_.v[p * D + d]);
             // the liquid's share of the front diffusion: the mixture's volume flux stays
             const Real w = diffuses && !held[d] ? (1 - mixture) / mixture * k * gradPhi[d] : 0;
             const Real moved = dt * (vNew[d] + w);

@@ -87,6 +87,8 @@ CASES = {
     "time_end_negative": (sub("end = 0.5", "end = -0.5"), "check", "-", ["time.end"]),
     "output_interval_zero": (sub("output_interval = 0.01", "output_interval = 0"), "check", "-", ["time.output_interval"]),
     "bulk_modulus_zero": (sub("bulk_modulus = 2.128e7", "bulk_modulus = 0"), "check", "-", ["liquid.bulk_modulus"]),
+    "pic_share_above_half": (sub("bulk_modulus = 2.128e7", "bulk_modulus = 2.128e7\npic_share = 0.8"), "check", "-",
+                             ["liquid.pic_share", "0.5"]),
     "monitor_above_top": (sub("elevation = 0.1116", "elevation = 0.5"), "check", "-", ["monitors[0].elevation"]),
     "head_not_finite": (sub("head = 0.2046", "head = nan"), "check", "-", ["reservoir.head", "finite"]),
     "points_per_cell_zero": (BASE + "\n[points]\nsolid_per_cell = 0\n", "check", "-", ["points.solid_per_cell"]),
