@@ -9,34 +9,21 @@ namespace qs {
 
 namespace {
 
-/// Whether a cell is open to the water's flow through the bed: fluidised, or a pocket of water,
-/// a cell with no sand at or above the filter under its column's sand surface. When a pipe empties
-/// the sand from its base the pocket is still the channel's foot (piping2D's left wall, 8 to
-/// 11.5 s, was missed without it). The chamber below the filter and the free water above the
-/// sand are not pockets.
-bool isOpen(const SandCells& s, Index c) {
-    if (s.state[c] == CellSand::Fluidised) return true;
-    if (s.state[c] != CellSand::None) return false;
-    const Index columns = s.columns(), row = c / columns;
-    if (row < s.baseRow) return false;
-    const Real top = s.surface.empty() ? Real(NAN) : s.surface[c % columns];
-    const Real cellTop = (row + 1) * s.h;
-    return std::isfinite(top) && cellTop <= top + 1e-9 * s.h;
-}
-
-/// Labels the open cells (isOpen) by connected region (face neighbours), -1 elsewhere; returns the
-/// number of regions. An explicit stack, not recursion: a region may hold every cell of the grid.
-Index labelRegions(const SandCells& s, std::vector<Index>& label) {
+/// Labels the cells for which `member(c)` holds by connected region (face neighbours), -1
+/// elsewhere; returns the number of regions. An explicit stack, not recursion: a region may hold
+/// every cell of the grid.
+template <class Member>
+Index labelRegions(const SandCells& s, std::vector<Index>& label, Member&& member) {
     const int D = s.dimension;
     const Index total = static_cast<Index>(s.state.size());
     label.assign(total, -1);
-    std::vector<char> open(total);
-    for (Index c = 0; c < total; ++c) open[c] = isOpen(s, c);
+    std::vector<char> in(total);
+    for (Index c = 0; c < total; ++c) in[c] = member(c);
     Index stride[3] = {1, s.cells[0], D == 3 ? s.cells[0] * s.cells[1] : s.cells[0]};
     std::vector<Index> stack;
     Index regions = 0;
     for (Index start = 0; start < total; ++start) {
-        if (!open[start] || label[start] >= 0) continue;
+        if (!in[start] || label[start] >= 0) continue;
         label[start] = regions;
         stack.push_back(start);
         while (!stack.empty()) {
@@ -50,7 +37,7 @@ Index labelRegions(const SandCells& s, std::vector<Index>& label) {
                     const Index kn = k + side;
                     if (kn < 0 || kn >= s.cells[d]) continue;
                     const Index n = c + side * stride[d];
-                    if (open[n] && label[n] < 0) {
+                    if (in[n] && label[n] < 0) {
                         label[n] = regions;
                         stack.push_back(n);
                     }
@@ -62,14 +49,58 @@ Index labelRegions(const SandCells& s, std::vector<Index>& label) {
     return regions;
 }
 
+/// Per column, the highest row of the bed's sand: the sand (solid or fluidised) connected to the
+/// lowest sand in the grid, on the filter or, for a plug lifted off it, above; -1 where a column
+/// has none. Sand thrown up and floating apart from the bed is not its roof, so the free water
+/// under it is not a pocket.
+std::vector<Index> bedTops(const SandCells& s) {
+    std::vector<Index> label;
+    const Index regions = labelRegions(s, label, [&](Index c) { return s.state[c] != CellSand::None; });
+    std::vector<char> bed(regions, 0);
+    const Index columns = s.columns();
+    Index lowest = -1;
+    for (Index c = 0; c < static_cast<Index>(label.size()) && lowest < 0; ++c)
+        if (label[c] >= 0) lowest = c / columns;
+    if (lowest >= 0)
+        for (Index k = 0; k < columns; ++k) {
+            const Index c = s.cell(k, lowest);
+            if (label[c] >= 0) bed[label[c]] = 1;
+        }
+    std::vector<Index> top(columns, -1);
+    for (Index c = 0; c < static_cast<Index>(label.size()); ++c)
+        if (label[c] >= 0 && bed[label[c]]) top[c % columns] = std::max(top[c % columns], c / columns);
+    return top;
+}
+
+/// Whether a cell is open to the water's flow through the bed: fluidised, or a pocket of water,
+/// a cell with no sand at or above the filter under the bed's sand in its column (and under the
+/// column's sand surface). When a pipe empties the sand from its base the pocket is still the
+/// channel's foot (piping2D's left wall, 8 to 11.5 s, was missed without it). The chamber below
+/// the filter, the free water above the sand and under sand afloat apart from the bed are not
+/// pockets; without the columns' surfaces nothing is.
+bool isOpen(const SandCells& s, const std::vector<Index>& bedTop, Index c) {
+    if (s.state[c] == CellSand::Fluidised) return true;
+    if (s.state[c] != CellSand::None || s.surface.empty()) return false;
+    const Index columns = s.columns(), row = c / columns;
+    if (row < s.baseRow || row >= bedTop[c % columns]) return false;
+    const Real top = s.surface[c % columns];
+    return std::isfinite(top) && (row + 1) * s.h <= top + 1e-9 * s.h;
+}
+
 }  // namespace
 
 PipeSurvey findPipes(const SandCells& s) {
     PipeSurvey survey;
     const int D = s.dimension;
     const Index columns = s.columns();
+    const std::vector<Index> bedTop = bedTops(s);
     std::vector<Index> label;
-    const Index regions = labelRegions(s, label);
+    const Index regions = labelRegions(s, label, [&](Index c) { return isOpen(s, bedTop, c); });
+    // a region of open cells without fluidised sand is a cavity under solid sand: it neither pipes
+    // nor counts as the fluidised sand's share of the water
+    std::vector<Index> fluidisedIn(regions, 0);
+    for (Index c = 0; c < static_cast<Index>(label.size()); ++c)
+        if (label[c] >= 0 && s.state[c] == CellSand::Fluidised) ++fluidisedIn[label[c]];
 
     // the base row: water through it, and whether any of it is still solid
     Real totalFlux = 0, fluidisedFlux = 0;
@@ -77,7 +108,7 @@ PipeSurvey findPipes(const SandCells& s) {
     for (Index k = 0; k < columns; ++k) {
         const Index base = s.cell(k, s.baseRow);
         totalFlux += s.baseFlux[k];
-        if (isOpen(s, base)) fluidisedFlux += s.baseFlux[k];
+        if (label[base] >= 0 && fluidisedIn[label[base]] > 0) fluidisedFlux += s.baseFlux[k];
         if (s.state[base] == CellSand::Solid) solidAtBase = true;
     }
     auto share = [&](Real flux) { return totalFlux > 0 ? flux / totalFlux : Real(0); };

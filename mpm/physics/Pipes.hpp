@@ -5,7 +5,9 @@
 // channel rising from the filter through sand that stays solid beside it. On the grid:
 //   - a cell is fluidised, solid, or holds no sand (the liquid-state switch's per-cell state);
 //   - a cell is open when it is fluidised or a pocket of water: no sand, at or above the filter,
-//     under its column's sand surface (the foot of a pipe that has emptied its base);
+//     under its column's sand surface and under sand of the bed (sand connected to the grid's
+//     lowest sand) in its column: the foot of a pipe that has emptied its base. Free water under
+//     sand afloat apart from the bed is not a pocket;
 //   - a fluidised region is a set of open cells connected through their faces (4 neighbours in
 //     2D, 6 in 3D; cells touching only at an edge or a corner are not connected), at least one of
 //     them fluidised (a pocket alone is a cavity under solid sand);
@@ -67,7 +69,7 @@ struct Pipe {
 
 struct PipeSurvey {
     std::vector<Pipe> pipes;        ///< largest flux share first
-    Real fluidisedFluxShare = 0;    ///< -, through every open base cell (fluidised or a pocket)
+    Real fluidisedFluxShare = 0;    ///< -, through the base cells of open regions holding fluidised sand
 };
 
 /// Shortest pipe, in cells.

@@ -111,12 +111,59 @@ TEST(Pipes, APipeWhoseFootIsAPocketOfWaterIsStillAPipeAndAPocketAloneIsNot) {
     EXPECT_NEAR(p.height, 0.07, 1e-12);
     EXPECT_TRUE(p.wall);
     EXPECT_NEAR(p.fluxShare, 4.0 / 11, 1e-12);
-    // the open base cells: the pipe's pocket and the cavity
-    EXPECT_NEAR(survey.fluidisedFluxShare, 5.0 / 11, 1e-12);
+    // the open base cells joined to fluidised sand: the pipe's pocket, not the cavity
+    EXPECT_NEAR(survey.fluidisedFluxShare, 4.0 / 11, 1e-12);
     // without the columns' surfaces nothing is a pocket: the fluidised part no longer touches
     // the filter, and no pipe is found
     s.surface.clear();
     EXPECT_TRUE(findPipes(s).pipes.empty());
+}
+
+TEST(Pipes, APlugLiftedOffTheFilterIsNeitherAPipeNorFluidised) {
+    // the whole base row without sand under a solid bed: a cavity, no fluidised sand anywhere
+    SandCells s = solidBed(2, 6, 1, 12, 8);
+    for (Index k = 0; k < 6; ++k) empty(s, k, 1, 1);
+    const PipeSurvey survey = findPipes(s);
+    EXPECT_TRUE(survey.pipes.empty());
+    EXPECT_EQ(survey.fluidisedFluxShare, 0.0);
+    // one column of it fluidised above the cavity: the whole base is then open and joined to it
+    fluidise(s, 2, 2, 8);
+    EXPECT_NEAR(findPipes(s).fluidisedFluxShare, 1.0, 1e-12);
+}
+
+TEST(Pipes, FreeWaterAboveTheBedOrUnderSandAfloatIsNoPocket) {
+    // a fluidised channel through the whole bed (rows 1-6) to its surface, free water above, and
+    // sand thrown up afloat across the column at row 10 (its surface read from the highest solid
+    // point, row 10's top): the free water under it is not a pocket, so the pipe ends at the bed's
+    // top (6 cells, 0.06 m) instead of taking the free water (30 cells, 0.09 m)
+    for (int D : {2, 3}) {
+        const Index nx = D == 3 ? 4 : 8, ny = D == 3 ? 4 : 1;
+        SandCells s = solidBed(D, nx, ny, 14, 6);
+        const Index channel = D == 3 ? 1 * nx + 1 : 3;
+        fluidise(s, channel, 1, 6);
+        const PipeSurvey bare = findPipes(s);  // no raft: the free water above is not a pocket
+        ASSERT_EQ(bare.pipes.size(), 1u) << D << "D";
+        EXPECT_EQ(bare.pipes[0].cellCount, 6) << D << "D";
+        for (Index k = 0; k < s.columns(); ++k) {
+            s.state[s.cell(k, 10)] = CellSand::Solid;
+            s.surface[k] = s.filterLevel + 10 * s.h;
+        }
+        const PipeSurvey afloat = findPipes(s);
+        ASSERT_EQ(afloat.pipes.size(), 1u) << D << "D";
+        EXPECT_EQ(afloat.pipes[0].cellCount, 6) << D << "D";
+        EXPECT_NEAR(afloat.pipes[0].height, 0.06, 1e-12) << D << "D";
+        EXPECT_NEAR(afloat.fluidisedFluxShare, 1.0 / static_cast<double>(s.columns()), 1e-12) << D << "D";
+        // the raft landed on the bed (rows 7-9 sand): now it is the bed's, and a pocket under it
+        // beside the channel (row 7 of the channel's neighbour emptied) joins the pipe
+        for (Index k = 0; k < s.columns(); ++k)
+            for (Index r = 7; r <= 9; ++r) s.state[s.cell(k, r)] = CellSand::Solid;
+        fluidise(s, channel, 7, 9);
+        empty(s, channel + 1, 7, 7);
+        const PipeSurvey landed = findPipes(s);
+        ASSERT_EQ(landed.pipes.size(), 1u) << D << "D";
+        EXPECT_EQ(landed.pipes[0].cellCount, 10) << D << "D";
+        EXPECT_NEAR(landed.pipes[0].height, 0.09, 1e-12) << D << "D";
+    }
 }
 
 TEST(Pipes, InThreeDimensionsWidthIsTheDiameterOfTheMeanSectionAndEveryWallCounts) {
