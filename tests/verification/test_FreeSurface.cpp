@@ -147,22 +147,47 @@ TEST(FreeSurface2D, AStrayPointAboveLeavesThePorePressureBelowAsItWas) {
 
 namespace {
 
-/// The rms of the free water's point velocities, seeded with a random velocity of `seed` m/s
-/// per point and run `steps` steps at rest (docs/piping.md, "The free water over a boil").
-double freeWaterNoiseAfter(double picShare, double seed, int steps) {
-    CaseConfig c = freeWaterColumn(3.0);
+/// What is left, after `steps` steps, of velocities seeded in the free water of a column at rest:
+/// a random velocity of `noise` m/s per point (what the grid cannot see, a few points per node
+/// moving opposite ways) and a vortex of `swirl` m/s filling the free water (a flow the grid
+/// resolves, its stream function psi = sin(pi x / W) sin(pi (z - z0) / (z1 - z0)), free of
+/// divergence and of flow through the walls). The vortex is measured by its projection on the
+/// seeded field, the noise as the rms of what the projection leaves (docs/piping.md, "The free
+/// water over a boil").
+struct SeededFreeWater {
+    double noise;  ///< rms of the residual over its seeded rms
+    double swirl;  ///< the vortex's amplitude over its seeded amplitude (0 when not seeded)
+};
+
+SeededFreeWater freeWaterAfter(double picShare, double noise, double swirl, int steps, int across = 2,
+                               double cells = 3.0) {
+    CaseConfig c = freeWaterColumn(cells);
+    inGeometry(c, Geometry::Plane2D, across);
     c.liquid.picShare = picShare;
     auto reservoir = makeReservoirModel(c);
     DoublePointSolver<2> solver(c, *reservoir);
-    const double sandTop = c.sandTop() + c.grid.cellSize;  // a cell clear of the sand's nodes
+    const double z0 = c.sandTop() + c.grid.cellSize;  // a cell clear of the sand's nodes
+    const double z1 = c.column.waterLevel, width = c.grid.width, pi = std::acos(-1.0);
     const auto& l = solver.liquid();
-    auto free = [&](std::size_t p) { return l.x[p * 2 + 1] > sandTop; };
-    auto rms = [&]() {
-        double s = 0;
+    auto free = [&](std::size_t p) { return l.x[p * 2 + 1] > z0 && l.x[p * 2 + 1] < z1; };
+    auto vortex = [&](std::size_t p, int axis) {  // (d psi / dz, -d psi / dx), psi scaled by W / pi
+        const double a = pi * l.x[p * 2] / width, b = pi * (l.x[p * 2 + 1] - z0) / (z1 - z0);
+        return axis == 0 ? std::sin(a) * std::cos(b) * width / (z1 - z0) : -std::cos(a) * std::sin(b);
+    };
+    auto measure = [&](double& amplitude, double& residual) {
+        double sv = 0, ss = 0;
+        for (std::size_t p = 0; p < l.size(); ++p)
+            if (free(p))
+                for (int d = 0; d < 2; ++d) { sv += l.v[p * 2 + d] * vortex(p, d); ss += vortex(p, d) * vortex(p, d); }
+        amplitude = sv / ss;
+        double r = 0;
         int n = 0;
         for (std::size_t p = 0; p < l.size(); ++p)
-            if (free(p)) { s += l.v[p * 2] * l.v[p * 2] + l.v[p * 2 + 1] * l.v[p * 2 + 1]; ++n; }
-        return std::sqrt(s / n);
+            if (free(p)) {
+                for (int d = 0; d < 2; ++d) r += std::pow(l.v[p * 2 + d] - amplitude * vortex(p, d), 2);
+                ++n;
+            }
+        residual = std::sqrt(r / n);
     };
     CheckpointData data;
     solver.saveState(data);
@@ -170,12 +195,15 @@ double freeWaterNoiseAfter(double picShare, double seed, int steps) {
     std::uint32_t state = 12345;  // a fixed linear congruential sequence: the same on every machine
     auto next = [&]() { state = state * 1664525u + 1013904223u; return state / 4294967296.0 - 0.5; };
     for (std::size_t p = 0; p < l.size(); ++p)
-        if (free(p)) { v[p * 2] += 2 * seed * next(); v[p * 2 + 1] += 2 * seed * next(); }
-    data.put("liquid_field1", v);
+        if (free(p))
+            for (int d = 0; d < 2; ++d) v[p * 2 + d] += 2 * noise * next() + swirl * vortex(p, d);
+    data.put("liquid_field1", v);  // the liquid points' velocities
     solver.loadState(data);
-    const double start = rms();
+    double a0 = 0, r0 = 0, a = 0, r = 0;
+    measure(a0, r0);
     for (int k = 0; k < steps; ++k) solver.step();
-    return rms() / start;
+    measure(a, r);
+    return {r / r0, swirl > 0 ? a / a0 : 0.0};
 }
 
 }  // namespace
@@ -188,8 +216,8 @@ double freeWaterNoiseAfter(double picShare, double seed, int steps) {
 // the grid does see of a random seed is small: a few points per node, opposite ways).
 TEST(FreeSurface2D, PicShareDampsThePointVelocitiesTheGridCannotSee) {
     const double seed = 1e-6;  // m/s: far too small to move the water's points measurably
-    const double flip = freeWaterNoiseAfter(0.0, seed, 300);
-    const double blended = freeWaterNoiseAfter(0.01, seed, 300);
+    const double flip = freeWaterAfter(0.0, seed, 0.0, 300).noise;
+    const double blended = freeWaterAfter(0.01, seed, 0.0, 300).noise;
     const double closed = std::pow(0.99, 300);
     EXPECT_GT(flip, 0.5);  // FLIP keeps it (0.964 achieved)
     // the blend takes it down as the closed form: within 10 % (0.050 against 0.049 achieved)
@@ -197,4 +225,28 @@ TEST(FreeSurface2D, PicShareDampsThePointVelocitiesTheGridCannotSee) {
     EXPECT_LT(std::abs(blended / closed - 1), 0.05);  // guard
     std::printf("free water's random point velocities after 300 steps: FLIP %.3f of the seed, pic_share 0.01 %.3f "
                 "((0.99)^300 = %.3f)\n", flip, blended, closed);
+}
+
+// The blend must take the grid's velocity, not zero: at rest the two are the same, so here the
+// free water turns as a vortex under the same random noise. A blend towards zero would leave
+// (0.99)^300 = 0.049 of the vortex; FLIP keeps it all. The blend keeps what the grid sees of it:
+// each step it takes a share alpha towards the grid's own velocity, and the grid (linear hats)
+// carries a fraction lambda of a mode a few cells across, so the vortex decays as
+// (1 - alpha (1 - lambda))^steps. Twelve cells across (6 at the vortex's half wavelength)
+// lambda ~ 0.96 and 0.88 is kept (FLIP 0.997); six cells across kept 0.63 (lambda ~ 0.85): PIC's known damping of
+// what the grid barely resolves, which is why the blend is small and off by default.
+TEST(FreeSurface2D, PicShareKeepsTheFlowTheGridSees) {
+    const double noise = 1e-6, swirl = 1e-6;  // m/s
+    const auto flip = freeWaterAfter(0.0, noise, swirl, 300, 12, 12.0);
+    const auto blended = freeWaterAfter(0.01, noise, swirl, 300, 12, 12.0);
+    const double closed = std::pow(0.99, 300);
+    std::printf("vortex kept after 300 steps: FLIP %.3f, pic_share 0.01 %.3f (towards zero: %.3f); noise and the "
+                "vortex's unresolved part left: FLIP %.3f, blend %.3f\n",
+                flip.swirl, blended.swirl, closed, flip.noise, blended.noise);
+    EXPECT_GT(flip.swirl, 0.95);
+    EXPECT_GT(blended.swirl, 0.5);  // ten times what a blend towards zero leaves
+    EXPECT_GT(blended.swirl, 0.85);  // guard near what is achieved
+    EXPECT_GT(flip.noise, 0.9);
+    EXPECT_LT(blended.noise, 0.5 * flip.noise);
+    EXPECT_LT(blended.noise, 0.15);  // guard: 0.108 achieved (0.978 FLIP)
 }
