@@ -6,6 +6,9 @@
 // V <- V (1 + d eps_L), which keeps that relation as the point moves between sand and free water.
 // Pore pressure p is gauge, compression positive; it is a cell quantity (one value per cell
 // each step) carried by the points so that it moves with the liquid (physics.md section 2).
+// Below the cavitation limit the water takes no more tension: what the liquid expands further is
+// a cavity (vapour, released air), a volumetric strain the point remembers and that a compression
+// closes at the limit's pressure before the water is pressed again.
 #include <vector>
 
 #include "points/PointSet.hpp"
@@ -22,6 +25,7 @@ struct LiquidPoints {
     std::vector<Real> volume;     ///< m3, mixture volume V
     std::vector<Real> pressure;   ///< Pa, pore pressure (gauge, compression positive)
     std::vector<int> state;       ///< LiquidFlags, set each step
+    std::vector<Real> cavity;     ///< -, volumetric strain opened at the cavitation limit (>= 0)
 
     ShapeCache<D> shape;          ///< per-step scratch
     std::vector<Real> weight;     ///< m3, integration weight V* (per step, see the solver)
@@ -29,9 +33,13 @@ struct LiquidPoints {
 
     std::size_t size() const { return mass.size(); }
 
+    /// The index of cavity among forEachField's fields: checkpoints written before it existed
+    /// (2026-12-04) have none (solver/SolverCheckpoint.cpp)
+    static constexpr int kCavityField = 6;
+
     template <class F>
     void forEachField(F&& f) {
-        f(x, D); f(v, D); f(mass, 1); f(volume, 1); f(pressure, 1); f(state, 1);
+        f(x, D); f(v, D); f(mass, 1); f(volume, 1); f(pressure, 1); f(state, 1); f(cavity, 1);
     }
 };
 

@@ -60,6 +60,7 @@ void appendLiquid(LiquidPoints<D>& l, const Vec<D>& x, Real V, Real mass, Real p
     l.volume.push_back(V);
     l.pressure.push_back(p);
     l.state.push_back(kSubmergedLiquid);
+    l.cavity.push_back(0);
 }
 
 Index cellsIn(Real length, Real h) { return static_cast<Index>(std::llround(length / h)); }

@@ -9,6 +9,7 @@
 #include "solver/DoublePointSolver.hpp"
 #include "materials/ConstitutiveModel.hpp"
 #include "materials/StressTensor.hpp"
+#include "physics/Cavitation.hpp"
 #include "solver/Parallel.hpp"
 #include "solver/PointStencil.hpp"
 
@@ -251,12 +252,16 @@ void DoublePointSolver<D>::updatePressure() {
         // artificial compressibility): the liquid points carry the field along its gradient as
         // they move (above), so a steady seepage stays steady. Subtracting v_L . grad p here as
         // well was tried: it biased case B's steady filter velocity by 1.5 % over 60 s
-        const Real dp = -(KL / cellPorosity_[c]) * dt * div;
+        const Real stiffness = KL / cellPorosity_[c];
+        const Real dp = -stiffness * dt * div;
         cellPressureIncrement_[c] = dp;
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
-            Real& pp = liquid_.pressure[p];
-            pp = std::max(pp + dp, pMin);  // the liquid takes no tension below the cavitation limit
-            if (zeroSurface && liquid_.state[p] == kFreeSurfaceLiquid) pp = 0;
+            // the liquid takes no tension below the cavitation limit: beyond it a cavity opens,
+            // which a compression closes before it presses the water (physics/Cavitation.hpp)
+            const CavitatingWater w = pressWater({liquid_.pressure[p], liquid_.cavity[p]}, dp, stiffness, pMin);
+            const bool surface = liquid_.state[p] == kFreeSurfaceLiquid;
+            liquid_.pressure[p] = zeroSurface && surface ? 0 : w.pressure;
+            liquid_.cavity[p] = surface ? 0 : w.cavity;  // a cavity at the free surface vents
         }
     });
 }

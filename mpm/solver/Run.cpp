@@ -85,6 +85,7 @@ void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver, const 
                          {{"velocity", l.v.data(), D, FieldKind::Vector},
                           {"pore_pressure", l.pressure.data(), 1},
                           {"volume", l.volume.data(), 1},
+                          {"cavity", l.cavity.data(), 1},
                           {"state", lState.data(), 1}});
     if (cells) writeCells(writer, solver.grid(), *cells);
     writer.endStep();

@@ -144,7 +144,7 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     // points start with C = 0, a PIC transfer for their first step
     getSet(data, "solid", solid_, D, SolidPoints<D>::kVelocityGradientField);
     solid_.stressReturn.assign(solid_.size(), 0);  // per-step scratch, one per point of the checkpoint
-    getSet(data, "liquid", liquid_, D);
+    getSet(data, "liquid", liquid_, D, LiquidPoints<D>::kCavityField);
     requireCodes(solid_.state, 2, "solid state");
     requireCodes(solid_.material, static_cast<int>(materials_.size()), "material");
     requireCodes(liquid_.state, 2, "liquid state");

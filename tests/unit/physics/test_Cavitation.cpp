@@ -1,0 +1,65 @@
+// The pore water under tension (physics/Cavitation.hpp): the pressure is a function of the strain
+// alone, p = max(p_min, p_0 - s eps), with the cavity c = max(0, (p_min - p_0) / s + eps).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdint>
+
+#include "physics/Cavitation.hpp"
+
+using namespace qs;
+
+namespace {
+
+const double kStiffness = 2.128e7 / 0.4;  // Pa, K_L / n of the paper's softened water
+const double kLimit = 0.0;                // Pa, gauge
+
+}  // namespace
+
+TEST(Cavitation, AboveTheLimitTheWaterIsPressedAsBefore) {
+    const CavitatingWater w = pressWater({1000.0, 0.0}, -400.0, kStiffness, kLimit);
+    EXPECT_DOUBLE_EQ(w.pressure, 600.0);
+    EXPECT_EQ(w.cavity, 0.0);
+}
+
+TEST(Cavitation, BeyondTheLimitACavityOpensAndACompressionClosesItBeforePressing) {
+    // from 1000 Pa, an expansion that would take it to -500 Pa: the limit, and a cavity of 500 Pa's strain
+    CavitatingWater w = pressWater({1000.0, 0.0}, -1500.0, kStiffness, kLimit);
+    EXPECT_EQ(w.pressure, kLimit);
+    EXPECT_NEAR(w.cavity, 500.0 / kStiffness, 1e-18);
+    // a compression of 300 Pa's strain closes part of it, at the limit
+    w = pressWater(w, 300.0, kStiffness, kLimit);
+    EXPECT_EQ(w.pressure, kLimit);
+    EXPECT_NEAR(w.cavity, 200.0 / kStiffness, 1e-18);
+    // one of 700 Pa's closes the rest and presses the water by 500 Pa
+    w = pressWater(w, 700.0, kStiffness, kLimit);
+    EXPECT_NEAR(w.pressure, 500.0, 1e-9);
+    EXPECT_EQ(w.cavity, 0.0);
+    // a clamp without the cavity would be at 700 Pa here, and 1000 + 700 after the cycle back
+}
+
+TEST(Cavitation, AlongAnyPathOfStrainThePressureIsThatOfTheStrainAlone) {
+    // a random walk of strain increments through the limit and back, many times: after each, the
+    // state is the closed form of the strain reached, and the walk closed returns it to its start
+    const double p0 = 2000.0, limit = -500.0;
+    CavitatingWater w{p0, 0.0};
+    double eps = 0, worstP = 0, worstC = 0;
+    std::uint32_t state = 7;
+    auto next = [&]() { state = state * 1664525u + 1013904223u; return state / 4294967296.0 - 0.5; };
+    int atLimit = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const double step = 2e-6 * next() + (k < 10000 ? 1e-8 : -1e-8);  // drift out, then back
+        eps += step;
+        w = pressWater(w, -kStiffness * step, kStiffness, limit);
+        const double p = std::max(limit, p0 - kStiffness * eps);
+        const double c = std::max(0.0, (limit - p0) / kStiffness + eps);
+        worstP = std::max(worstP, std::abs(w.pressure - p));
+        worstC = std::max(worstC, std::abs(w.cavity - c));
+        atLimit += w.pressure == limit;
+    }
+    EXPECT_GT(atLimit, 1000);             // the walk spent a good part at the limit
+    EXPECT_LT(worstP, 1e-6);              // Pa: round-off only
+    EXPECT_LT(worstC, 1e-12 * 1e-3);      // strain: round-off only
+    // back at the start's strain (to round-off): back at its pressure, the cavity closed
+    EXPECT_NEAR(w.pressure, std::max(limit, p0 - kStiffness * eps), 1e-6);
+}
