@@ -138,10 +138,14 @@ StressReturn MohrCoulomb::tensionReturn(Real* sigma, Real* plastic) const {
 StressReturn MohrCoulomb::update(const StressPoint& point) const {
     Real* s = point.stress;
     elastic_.update(s, point.strainIncrement);  // elastic trial stress
+    // most points stay elastic: the trial's principal values decide, the axes only for a return
+    Real trial[3];
+    principalValues(s, trial);
+    const bool tensionActive = tensile_ < apex_;
+    if (yield(trial) <= 0 && (!tensionActive || trial[0] <= tensile_)) return StressReturn::Elastic;
+
     PrincipalStress ps(s);
     Real sigma[3] = {ps.value[0], ps.value[1], ps.value[2]};
-    const bool tensionActive = tensile_ < apex_;
-    if (yield(sigma) <= 0 && (!tensionActive || sigma[0] <= tensile_)) return StressReturn::Elastic;
 
     Real plastic[3] = {0, 0, 0};
     StressReturn kind = returnToSurface(sigma, plastic);
