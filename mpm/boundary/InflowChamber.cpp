@@ -124,7 +124,7 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
             liquid.volume.push_back(pointVolume);
             liquid.pressure.push_back(liquid.pressure[ref] + density * gravity * (liquid.x[ref * D + D - 1] - z));
             liquid.state.push_back(kSubmergedLiquid);
-            liquid.cavity.push_back(0);
+            liquid.cavity.push_back(liquid.cavity[ref]);  // at the limit, its cavity too
             injected_ += pointVolume;
             bottom -= height;
         }
