@@ -108,8 +108,7 @@ void DoublePointSolver<D>::allocate() {
                     &drag_, &relSpeed_, &slopeMass_})
         a->assign(nn, 0.0);
     diffusionNode_.assign(nn, 0);
-    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velLIncrement_,
-                    &pressureGradient_, &fedWeight_})
+    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velLIncrement_, &fedWeight_})
         a->assign(nn * D, 0.0);
     solidCellStart_.assign(nc + 1, 0);
     liquidCellStart_.assign(nc + 1, 0);
@@ -121,7 +120,7 @@ void DoublePointSolver<D>::allocate() {
     cellSandSurface_.assign(nc, 0);
     cellDiffusivity_.assign(nc, 0.0);
     for (auto* a : {&cellLiquidVolume_, &cellFill_, &cellPressure_, &cellWeight_, &cellPorosity_, &cellSandPorosity_,
-                    &cellPressureIncrement_})
+                    &cellCavity_})
         a->assign(nc, 0.0);
     cellPressureGradient_.assign(nc * D, 0.0);
 

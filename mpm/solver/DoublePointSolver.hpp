@@ -180,7 +180,7 @@ private:
     std::vector<char> cellActive_, cellSubmerged_, cellFluidised_, cellStressFree_, cellSandSurface_;
     std::vector<Real> cellDiffusivity_;
     std::vector<Real> cellLiquidVolume_, cellFill_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,
-        cellPressureGradient_, cellPressureIncrement_;
+        cellPressureGradient_, cellCavity_;
 
     // nodes (vectors are [node][axis])
     std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_,
@@ -197,7 +197,6 @@ private:
     }
     std::vector<char> diffusionNode_;  ///< nodes where the front diffusion acts
     bool anyDiffusion_ = false;        ///< whether any node is one
-    std::vector<Real> pressureGradient_;  ///< Pa/m, [node][axis]
     BoundaryMasks<D> masks_;
     InflowChamber<D> chamber_;
     std::vector<char> dropFlags_;    ///< scratch of the outflow removal

@@ -182,7 +182,7 @@ void DoublePointSolver<D>::gridToPoints() {
     auto liquidPoint = [&](Index p, auto withDiffusion, auto linearShapes) {
         constexpr bool diffusion = decltype(withDiffusion)::value;
         constexpr bool linear = decltype(linearShapes)::value;
-        Real dv[D] = {}, vNew[D] = {}, div = 0, gradPhi[D] = {}, sand = 0, mixture = 0, gradP[D] = {};
+        Real dv[D] = {}, vNew[D] = {}, div = 0, gradPhi[D] = {}, sand = 0, mixture = 0;
         bool diffuses = diffusion, held[D] = {};
         forEachNodeOfPoint<linear>(grid_, liquid_, p, [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
@@ -191,7 +191,6 @@ void DoublePointSolver<D>::gridToPoints() {
                 vNew[d] += N * v;
                 div += v * gradN[d];
                 if constexpr (diffusion) gradPhi[d] -= gradN[d] * sandPorosity_[i];
-                gradP[d] += N * pressureGradient_[i * D + d];
             }
             if constexpr (diffusion) {
                 sand += N * sandPorosity_[i];
@@ -210,13 +209,7 @@ void DoublePointSolver<D>::gridToPoints() {
             liquid_.v[p * D + d] += picShare * (vNew[d] - liquid_.v[p * D + d]);
             // the liquid's share of the front diffusion: the mixture's volume flux stays
             const Real w = diffuses && !held[d] ? (1 - mixture) / mixture * k * gradPhi[d] : 0;
-            const Real moved = dt * (vNew[d] + w);
-            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + moved, lowest[d], extent[d]);
-            // pore pressure is a field the liquid moves through: a point carries its pressure
-            // along the gradient (and takes the cell's change at a fixed place, updatePressure),
-            // so that it enters the next cell with that cell's pressure instead of kicking the
-            // cell's mean by a cell's drop
-            liquid_.pressure[p] += gradP[d] * moved;
+            liquid_.x[p * D + d] = std::clamp(liquid_.x[p * D + d] + dt * (vNew[d] + w), lowest[d], extent[d]);
         }
         liquid_.volume[p] *= 1 + dt * div;  // V follows the liquid's own strain
     };
@@ -235,6 +228,7 @@ template <int D>
 void DoublePointSolver<D>::updatePressure() {
     // dp_c = -(K_L / n_c) dt sum_i grad N_i(x_c) . Phi_i,  Phi_i = (1-n_i) v_S,i + n_i v_L,i
     // (compressible liquid, incompressible grains; the cell average avoids volumetric locking).
+    // K_L is a numerical stiffness: this is artificial compressibility, taken at a fixed place.
     const Real KL = config_.liquid.bulkModulus, dt = dt_;
     const Real pMin = config_.liquid.cavitationPressure;
     const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
@@ -249,25 +243,36 @@ void DoublePointSolver<D>::updatePressure() {
                 div += gN * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
             }
         });
-        // the storage equation taken at a fixed place (K_L is a numerical stiffness, so this is
-        // artificial compressibility): the liquid points carry the field along its gradient as
-        // they move (above), so a steady seepage stays steady. Subtracting v_L . grad p here as
-        // well was tried: it biased case B's steady filter velocity by 1.5 % over 60 s
-        const Real stiffness = KL / cellPorosity_[c];
-        const Real dp = -stiffness * dt * div;
-        cellPressureIncrement_[c] = dp;
         // the water's top cells are open to the air (no wet cell above, or the overflow's row):
-        // what they expand at the limit is their surface rising, not a cavity, so none is kept.
-        // Kept there, the top row's water at p ~ 0 gathered cavities from every ripple and the
-        // gate's flux strayed 1.9 % from the filter's in the side-by-side gravels
+        // they take no suction, and what they expand is their surface rising, not a cavity, so
+        // none is kept. Kept there, the top row's water at p ~ 0 gathered cavities from every
+        // ripple and the gate's flux strayed 1.9 % from the filter's in the side-by-side gravels
         const bool openToAir = !cellSubmerged_[c] || (c / up) % rows + 1 == overflowRow_;
+        const Real limit = openToAir ? std::max(pMin, Real(0)) : pMin;
+        // the cell's water (computeForces) pressed by the mixture's strain, which is the water's
+        // over n_c: beyond the limit a cavity opens, which a compression closes before it
+        // presses the water (physics/Cavitation.hpp)
+        const CavitatingWater water =
+            pressWater({cellPressure_[c], cellCavity_[c]}, -KL / cellPorosity_[c] * dt * div, KL, limit);
+        // Each point takes the cell's field where it now is, p_c + grad p_c . (x - x_c): the field
+        // the liquid moves through, so that a point entering the next cell brings that cell's
+        // pressure instead of kicking its mean by a cell's drop. Points carried their own
+        // pressures along the gradient until 2026-12-05: nothing then pulled a point back to its
+        // cell's field, and once piping2D's bed fluidised, points from cells at the limit mixed
+        // with pressed ones and kept their own values, rms 1 to 44 kPa about the cell's field
+        // (docs/piping.md, "The point pressures"). Water within a cell equalises in h / c_L (three
+        // steps), so one state per cell is the water's physics at this resolution.
+        Real centre[D];
+        const IVec<D> cc = grid_.cellCoords(c);
+        for (int a = 0; a < D; ++a) centre[a] = grid_.cellCentre(cc[a]);
+        const Real* grad = &cellPressureGradient_[c * D];
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
-            // the liquid takes no tension below the cavitation limit: beyond it a cavity opens,
-            // which a compression closes before it presses the water (physics/Cavitation.hpp)
-            const CavitatingWater w = pressWater({liquid_.pressure[p], liquid_.cavity[p]}, dp, stiffness, pMin);
+            Real pressure = water.pressure;
+            if (water.cavity == 0)
+                for (int a = 0; a < D; ++a) pressure += grad[a] * (liquid_.x[p * D + a] - centre[a]);
             const bool surface = liquid_.state[p] == kFreeSurfaceLiquid;
-            liquid_.pressure[p] = zeroSurface && surface ? 0 : w.pressure;
-            liquid_.cavity[p] = surface || openToAir ? 0 : w.cavity;
+            liquid_.pressure[p] = zeroSurface && surface ? 0 : pressure;
+            liquid_.cavity[p] = surface || openToAir ? 0 : water.cavity;
         }
     });
 }

@@ -7,6 +7,7 @@
 #include "solver/DoublePointSolver.hpp"
 #include "boundary/Overflow.hpp"
 #include "boundary/Surcharge.hpp"
+#include "physics/Cavitation.hpp"
 #include "solver/Parallel.hpp"
 
 namespace qs {
@@ -42,29 +43,37 @@ void DoublePointSolver<D>::computeForces() {
     const Index nc = grid_.numCells();
 
     // Cell pore pressure at the cell's centre x_c, and the cell's porosity (its nodes' mean).
-    // The points carry the pressure field along its gradient (GridToPoints.cpp), so each holds
-    // the field where it is. Their V*-weighted mean is the field at their weighted centroid, not
-    // at x_c; each taken along the cell's gradient to the centre,
-    //   p_c = sum (p - grad p_c . (x - x_c)) V* / sum V*,
-    // the mean no longer depends on where in the cell the points happen to be. The plain mean
-    // did: at an overflow, a point leaving the top cell (the one with the lowest pressure) raised
-    // the cell's pressure by a few Pa, a kick that showed as a 3 % dip of case B's filter
-    // velocity; in 2D the points' strands sample the cells unevenly. The gradient is the last
-    // step's (part of the state, checkpointed): taken from this step's plain means instead, the
-    // correction extrapolated at the drained top of Terzaghi's column and blew up.
+    // A cell holds one state of its water: the pressure p_c with the cell's gradient about it,
+    // p = p_c + grad p_c . (x - x_c), or a cavity at the limit (updatePressure sets its points so).
+    // Points that crossed in from other cells bring their old cells' field at where they are now;
+    // each is taken along this cell's gradient to the centre, and the cell's water is where the
+    // V*-weighted mean of their strains puts it (physics/Cavitation.hpp),
+    //   e_c = sum e(p - grad p_c . (x - x_c), c) V* / sum V*,  (p_c, c_c) = the water at e_c,
+    // which conserves the water's volume as they mix. Without cavities p_c is the points' mean
+    // taken to the centre: it does not depend on where in the cell the points happen to be. The
+    // plain mean did: at an overflow, a point leaving the top cell (the one with the lowest
+    // pressure) raised the cell's pressure by a few Pa, a kick that showed as a 3 % dip of case
+    // B's filter velocity; in 2D the points' strands sample the cells unevenly. The gradient is the
+    // last step's (part of the state, checkpointed), the one updatePressure set the points with:
+    // taken from this step's plain means instead, the correction extrapolated at the drained top
+    // of Terzaghi's column and blew up.
+    const Real KL = config_.liquid.bulkModulus, pMin = config_.liquid.cavitationPressure;
     forAllCells(nc, liquidCellStart_, [&](Index c) {
-        Real pv = 0, w = 0, centre[D];
+        Real strain = 0, w = 0, centre[D];
         const IVec<D> cc = grid_.cellCoords(c);
         for (int a = 0; a < D; ++a) centre[a] = grid_.cellCentre(cc[a]);
         const Real* grad = &cellPressureGradient_[c * D];
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
             Real atCentre = liquid_.pressure[p];
-            for (int a = 0; a < D; ++a) atCentre -= grad[a] * (liquid_.x[p * D + a] - centre[a]);
-            pv += atCentre * liquid_.weight[p];
+            if (liquid_.cavity[p] == 0)  // a cavity's water is at the limit throughout its cell
+                for (int a = 0; a < D; ++a) atCentre -= grad[a] * (liquid_.x[p * D + a] - centre[a]);
+            strain += waterStrain({atCentre, liquid_.cavity[p]}, KL) * liquid_.weight[p];
             w += liquid_.weight[p];
         }
+        const CavitatingWater water = waterAtStrain(w > 0 ? strain / w : 0.0, KL, pMin);
         cellWeight_[c] = w;
-        cellPressure_[c] = w > 0 ? pv / w : 0.0;
+        cellPressure_[c] = w > 0 ? water.pressure : 0.0;
+        cellCavity_[c] = w > 0 ? water.cavity : 0.0;
         Real n = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int) { n += porosity_[i] / (1 << D); });
         cellPorosity_[c] = n;
@@ -101,16 +110,6 @@ void DoublePointSolver<D>::computeForces() {
         }
         forceS_[i * D + D - 1] -= massS_[i] * g;
         forceL_[i * D + D - 1] -= massL_[i] * g;
-        // the pore pressure's gradient at the node: the mean of its liquid cells' gradients
-        // (below), which liquid points moving carry their pressure along (GridToPoints.cpp)
-        Real grad[D] = {};
-        int cells = 0;
-        grid_.forEachCellOfNode(i, [&](Index cell, int) {
-            if (cellWeight_[cell] <= 0) return;
-            ++cells;
-            for (int a = 0; a < D; ++a) grad[a] += cellPressureGradient_[cell * D + a];
-        });
-        for (int a = 0; a < D; ++a) pressureGradient_[i * D + a] = cells > 0 ? grad[a] / cells : 0.0;
     });
 
     // Gate: the reservoir's pressure acts on the chamber's liquid at the gate plane, less the

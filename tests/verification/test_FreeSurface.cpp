@@ -139,7 +139,9 @@ TEST(FreeSurface2D, AStrayPointAboveLeavesThePorePressureBelowAsItWas) {
     const double pointWeight = strayMass * c.gravity / c.grid.crossSectionArea;  // 3.8 Pa
     EXPECT_LT(worstDp, pointWeight);
     EXPECT_LT(std::abs(meanDp / samples), pointWeight);
-    EXPECT_LT(worstDp, 1.5);  // guard: 1.0 Pa achieved (any liquid above counting: 26 Pa, mean 15 Pa)
+    // guard: 1.62 Pa achieved with one water state per cell (1.0 Pa while points carried their own
+    // pressures; any liquid above counting: 26 Pa, mean 15 Pa)
+    EXPECT_LT(worstDp, 2.0);
     // The water below does move: the falling point shares its cell's lower nodes with the water's
     // top cell and drags them (2.9e-3 m/s at most; 1.4e-2 m/s when the cell counted as full)
     EXPECT_LT(worst, 5e-3);

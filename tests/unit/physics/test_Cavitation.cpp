@@ -1,5 +1,6 @@
 // The pore water under tension (physics/Cavitation.hpp): the pressure is a function of the strain
-// alone, p = max(p_min, p_0 - s eps), with the cavity c = max(0, (p_min - p_0) / s + eps).
+// alone, p = max(p_min, p_0 - K eps), with the cavity c = max(0, (p_min - p_0) / K + eps), and
+// waters mixed keep their volume.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -11,7 +12,7 @@ using namespace qs;
 
 namespace {
 
-const double kStiffness = 2.128e7 / 0.4;  // Pa, K_L / n of the paper's softened water
+const double kStiffness = 5.32e7;  // Pa, a bulk modulus (2.5 times the paper's softened water)
 const double kLimit = 0.0;                // Pa, gauge
 
 }  // namespace
@@ -65,4 +66,27 @@ TEST(Cavitation, AlongAnyPathOfStrainThePressureIsThatOfTheStrainAlone) {
     w = pressWater(w, kStiffness * eps, kStiffness, limit);
     EXPECT_NEAR(w.pressure, p0, 1e-6);
     EXPECT_NEAR(w.cavity, 0.0, 1e-15);
+}
+
+TEST(Cavitation, WatersMixedKeepTheirVolume) {
+    // A cell's water is the V-weighted mean strain of the points in it (solver/GridUpdate.cpp).
+    // A point from a cavity at the limit (volume 1) and one pressed to 3000 Pa (volume 2): the
+    // pressed water fills the cavity and expands, and the total volume gained, c V - p V / K_L,
+    // is what it was.
+    const double K = 2.128e7, limit = -500.0;
+    const CavitatingWater open{limit, 1e-3}, pressed{3000.0, 0.0};
+    const double gained = 1.0 * waterStrain(open, K) + 2.0 * waterStrain(pressed, K);
+    const CavitatingWater mixed = waterAtStrain(gained / 3.0, K, limit);
+    EXPECT_NEAR(3.0 * waterStrain(mixed, K), gained, 1e-18);
+    // closed form: the cavity outweighs what the pressed water gives when it expands to the
+    // limit, 2 (3000 - limit) / K, so a smaller cavity remains, spread over all three volumes
+    EXPECT_EQ(mixed.pressure, limit);
+    EXPECT_NEAR(mixed.cavity, (1e-3 - 2 * (3000.0 - limit) / K) / 3.0, 1e-15);
+    // averaging the pressures instead would have put the cell at (limit + 2 * 3000) / 3 = 1833 Pa,
+    // the cavity's volume lost
+    // a smaller cavity is closed by the pressed water, which is left pressed
+    const CavitatingWater small{limit, 1e-5};
+    const CavitatingWater closed = waterAtStrain((waterStrain(small, K) + 2.0 * waterStrain(pressed, K)) / 3.0, K, limit);
+    EXPECT_EQ(closed.cavity, 0.0);
+    EXPECT_NEAR(closed.pressure, (limit - K * 1e-5 + 2 * 3000.0) / 3.0, 1e-6);
 }
