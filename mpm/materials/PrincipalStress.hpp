@@ -25,7 +25,10 @@ namespace qs {
 /// full decomposition of every point, elastic or not, was 26 % of the step (docs/performance.md).
 inline void principalValues(const Real* s, Real* v) {
     if (s[3] == 0 && s[5] == 0) {
-        const Real mean = 0.5 * (s[0] + s[2]), radius = std::hypot(0.5 * (s[0] - s[2]), s[4]);
+        // (a plain square root: std::hypot's care for overflow cost 4 % of piping2D's step, and a
+        // stress squared is far from overflowing)
+        const Real half = 0.5 * (s[0] - s[2]);
+        const Real mean = 0.5 * (s[0] + s[2]), radius = std::sqrt(half * half + s[4] * s[4]);
         v[0] = mean + radius;
         v[1] = s[1];
         v[2] = mean - radius;
@@ -54,6 +57,10 @@ public:
             for (int k = 0; k < 3; ++k) { axis_[k] = order[k]; value[k] = s[order[k]]; }
             return;
         }
+        if (s[3] == 0 && s[5] == 0) {
+            inPlane(s);
+            return;
+        }
         Eigen::Matrix3d m;
         m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
         Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig;
@@ -78,6 +85,27 @@ public:
     Real value[3];  ///< Pa, principal stresses, largest (least compressive) first
 
 private:
+    /// Shear in the x-z plane only (plane strain, axisymmetry): y is a principal axis, and the
+    /// in-plane pair lies at the angle theta with cos 2 theta = (s_xx - s_zz) / 2r and
+    /// sin 2 theta = s_xz / r (Mohr's circle, radius r). cos theta and sin theta follow from the
+    /// half-angle formulas, no trigonometry: Eigen's 3 x 3 closed form (acos, sin, cos) for every
+    /// yielding point was 19 % of piping2D's step once its bed fluidised (docs/performance.md).
+    void inPlane(const Real* s) {
+        const Real half = 0.5 * (s[0] - s[2]);
+        const Real radius = std::sqrt(half * half + s[4] * s[4]);  // > 0: s_xz != 0 here
+        const Real cos2 = half / radius, sin2 = s[4] / radius;
+        Real c, sn;  // the larger of the two from its half-angle formula, the other from sin 2 theta
+        if (cos2 >= 0) { c = std::sqrt(0.5 * (1 + cos2)); sn = sin2 / (2 * c); }
+        else { sn = std::sqrt(0.5 * (1 - cos2)); c = sin2 / (2 * sn); }
+        const Real mean = 0.5 * (s[0] + s[2]);
+        Real v[3] = {mean + radius, s[1], mean - radius};
+        Eigen::Vector3d a[3] = {{c, 0, sn}, {0, 1, 0}, {-sn, 0, c}};
+        // y lies anywhere among the in-plane pair: sort, largest first
+        if (v[1] > v[0]) { std::swap(v[0], v[1]); std::swap(a[0], a[1]); }
+        if (v[2] > v[1]) { std::swap(v[1], v[2]); std::swap(a[1], a[2]); }
+        for (int k = 0; k < 3; ++k) { value[k] = v[k]; axes_.col(k) = a[k]; }
+    }
+
     bool diagonal_ = false;
     int axis_[3] = {0, 1, 2};  ///< diagonal case: the Voigt slot of each principal value
     Eigen::Matrix3d axes_;     ///< general case: columns are the principal directions

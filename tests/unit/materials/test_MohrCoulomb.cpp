@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdio>
 
 #include "materials/ConstitutiveModels.hpp"
 #include "materials/LinearElastic.hpp"
@@ -338,4 +339,44 @@ TEST(PrincipalStress, TheValuesAloneAreThoseOfTheFullDecomposition) {
         EXPECT_GE(v[1], v[2]);
     }
     EXPECT_LT(worst, 1e-9);  // Pa, at stresses of kPa: round-off
+}
+
+TEST(PrincipalStress, ThePlaneDecompositionIsEigensWithoutTheTrigonometry) {
+    // With shear in the x-z plane only, PrincipalStress takes the half-angle formulas of Mohr's
+    // circle instead of Eigen's 3 x 3 closed form. Against Eigen's iterative solver on random plane
+    // stresses, including near-isotropic ones and s_xx < s_zz (the half angle's other branch): the
+    // same values, and any returned values reassembled on the same axes (the axes' signs do not
+    // matter there, so the stress is compared, not the vectors)
+    std::uint32_t state = 99;
+    auto next = [&]() { state = state * 1664525u + 1013904223u; return state / 4294967296.0 - 0.5; };
+    double worstValue = 0, worstStress = 0, worstSame = 0;
+    for (int k = 0; k < 3000; ++k) {
+        const double scale = k % 4 == 0 ? 1e-3 : 1.0;  // a quarter nearly isotropic in the plane
+        Real s[6] = {-1000 + 800 * scale * next(), -1000 + 900 * next(), -1000 + 800 * scale * next(), 0,
+                     400 * scale * next(), 0};
+        const PrincipalStress ps(s);
+        Eigen::Matrix3d m;
+        m << s[0], s[5], s[4], s[5], s[1], s[3], s[4], s[3], s[2];
+        Eigen::SelfAdjointEigenSolver<Eigen::Matrix3d> eig(m);  // iterative QL, ascending
+        for (int i = 0; i < 3; ++i) worstValue = std::max(worstValue, std::abs(ps.value[i] - eig.eigenvalues()(2 - i)));
+        // returned values: each principal value moved by its own amount
+        const Real v[3] = {ps.value[0] + 300 * next(), ps.value[1] + 300 * next(), ps.value[2] + 300 * next()};
+        Real back[6];
+        ps.assemble(v, back);
+        const Eigen::Matrix3d ref =
+            eig.eigenvectors() * Eigen::Vector3d(v[2], v[1], v[0]).asDiagonal() * eig.eigenvectors().transpose();
+        const Real want[6] = {ref(0, 0), ref(1, 1), ref(2, 2), ref(1, 2), ref(0, 2), ref(0, 1)};
+        for (int i = 0; i < 6; ++i) worstStress = std::max(worstStress, std::abs(back[i] - want[i]));
+        EXPECT_EQ(back[3], 0.0);  // the out-of-plane shears stay exactly zero
+        EXPECT_EQ(back[5], 0.0);
+        // unchanged values give the stress back
+        Real same[6];
+        ps.assemble(ps.value, same);
+        for (int i = 0; i < 6; ++i) worstSame = std::max(worstSame, std::abs(same[i] - s[i]));
+    }
+    std::printf("plane decomposition against Eigen's solver: values %.2e Pa, returned stresses %.2e Pa, "
+                "the stress itself %.2e Pa\n", worstValue, worstStress, worstSame);
+    EXPECT_LT(worstValue, 1e-9);  // Pa, at stresses of kPa: round-off
+    EXPECT_LT(worstStress, 1e-9);
+    EXPECT_LT(worstSame, 1e-9);
 }
