@@ -18,6 +18,13 @@
 
 namespace qs {
 
+/// The radius of Mohr's circle of the x-z plane. A plain square root: std::hypot's care for
+/// overflow cost 4 % of piping2D's step, and a stress squared is far from overflowing.
+inline Real mohrRadius(const Real* s) {
+    const Real half = 0.5 * (s[0] - s[2]);
+    return std::sqrt(half * half + s[4] * s[4]);
+}
+
 /// The principal values alone, largest first: what a yield check needs, without the axes that
 /// only a return uses. A stress without shear is only sorted; one whose shear lies in the x-z
 /// plane (every point of a 2D plane-strain grid, whose out-of-plane axis is y) takes the 2 x 2
@@ -25,10 +32,7 @@ namespace qs {
 /// full decomposition of every point, elastic or not, was 26 % of the step (docs/performance.md).
 inline void principalValues(const Real* s, Real* v) {
     if (s[3] == 0 && s[5] == 0) {
-        // (a plain square root: std::hypot's care for overflow cost 4 % of piping2D's step, and a
-        // stress squared is far from overflowing)
-        const Real half = 0.5 * (s[0] - s[2]);
-        const Real mean = 0.5 * (s[0] + s[2]), radius = std::sqrt(half * half + s[4] * s[4]);
+        const Real mean = 0.5 * (s[0] + s[2]), radius = mohrRadius(s);
         v[0] = mean + radius;
         v[1] = s[1];
         v[2] = mean - radius;
@@ -91,9 +95,8 @@ private:
     /// half-angle formulas, no trigonometry: Eigen's 3 x 3 closed form (acos, sin, cos) for every
     /// yielding point was 19 % of piping2D's step once its bed fluidised (docs/performance.md).
     void inPlane(const Real* s) {
-        const Real half = 0.5 * (s[0] - s[2]);
-        const Real radius = std::sqrt(half * half + s[4] * s[4]);  // > 0: s_xz != 0 here
-        const Real cos2 = half / radius, sin2 = s[4] / radius;
+        const Real radius = mohrRadius(s);  // > 0: s_xz != 0 here
+        const Real cos2 = 0.5 * (s[0] - s[2]) / radius, sin2 = s[4] / radius;
         Real c, sn;  // the larger of the two from its half-angle formula, the other from sin 2 theta
         if (cos2 >= 0) { c = std::sqrt(0.5 * (1 + cos2)); sn = sin2 / (2 * c); }
         else { sn = std::sqrt(0.5 * (1 - cos2)); c = sin2 / (2 * sn); }
