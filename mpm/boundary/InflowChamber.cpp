@@ -88,8 +88,8 @@ Real InflowChamber<D>::gapAtNode(const Grid<D>& grid, Index node) const {
 
 template <int D>
 void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
-                              const std::vector<Index>& liquidCellStart, Real density, Real gravity,
-                              Real fallbackPressure) {
+                              const std::vector<Index>& liquidCellStart, Real density,
+                              const std::vector<Real>& cellPressureGradient) {
     const Real height = pointHeight_;
     const Index slots = static_cast<Index>(gaps_.size());
     // the lowest liquid point of every slot, from the chamber's two lowest cell rows
@@ -102,7 +102,10 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
             Scan& s = scan_[slot];
             const Real z = liquid.x[p * D + D - 1];
             s.bottom = std::min(s.bottom, z - 0.5 * liquid.volume[p] / slotFootprint(grid, slot));
-            if (s.ref < 0 || z < liquid.x[s.ref * D + D - 1]) s.ref = p;
+            if (s.ref < 0 || z < liquid.x[s.ref * D + D - 1]) {
+                s.ref = p;
+                s.cell = c;
+            }
         }
     }
     for (Index slot = 0; slot < slots; ++slot) {
@@ -118,19 +121,26 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
             for (int d = 0; d < D - 1; ++d) liquid.x.push_back(centre[d]);
             const Real z = bottom - 0.5 * height;
             liquid.x.push_back(z);
-            // the new water moves and is pressed like the water just above it
+            // the new water moves and is pressed like the water just above it: its pressure is
+            // that water's cell's field where it is put (the field the next step reads its cells'
+            // water from, GridUpdate.cpp), or the limit, with its cavity, if that water is there
+            Real pressure = liquid.pressure[ref];
+            if (liquid.cavity[ref] == 0) {
+                const Index at = liquid.x.size() - D;
+                for (int d = 0; d < D; ++d)
+                    pressure += cellPressureGradient[s.cell * D + d] * (liquid.x[at + d] - liquid.x[ref * D + d]);
+            }
             for (int d = 0; d < D; ++d) liquid.v.push_back(liquid.v[ref * D + d]);
             liquid.mass.push_back(density * pointVolume);
             liquid.volume.push_back(pointVolume);
-            liquid.pressure.push_back(liquid.pressure[ref] + density * gravity * (liquid.x[ref * D + D - 1] - z));
+            liquid.pressure.push_back(pressure);
             liquid.state.push_back(kSubmergedLiquid);
-            liquid.cavity.push_back(liquid.cavity[ref]);  // at the limit, its cavity too
+            liquid.cavity.push_back(liquid.cavity[ref]);
             injected_ += pointVolume;
             bottom -= height;
         }
         gaps_[slot] = std::max(Real(0), bottom);
     }
-    (void)fallbackPressure;
 }
 
 template class InflowChamber<1>;

@@ -14,7 +14,7 @@
 // volume is that height times the slot's footprint (in axisymmetry, 2 pi r_slot wide).
 //
 // Usage, once per step after the points moved:
-//   chamber.inject(grid, liquid, liquidCellStart, density, gravity, fallbackPressure);
+//   chamber.inject(grid, liquid, liquidCellStart, density, cellPressureGradient);
 //   chamber.gapAtNode(grid, node)  // for the next step's gate traction
 #include <vector>
 
@@ -32,10 +32,11 @@ public:
 
     /// Injects new points in every slot whose gap reached one point's height. The cell lists
     /// are those of the step's start (the chamber's lowest two cell rows are scanned).
-    /// A new point takes the velocity of the lowest point above it and its pressure plus the
-    /// free water's hydrostatic difference between them.
+    /// A new point takes the velocity of the lowest point above it, and its pressure carried
+    /// along that point's cell's pressure gradient (Pa/m, [cell][axis]) to where it is put, or
+    /// its pressure and cavity as they are if that point holds a cavity (its water at the limit).
     void inject(const Grid<D>& grid, LiquidPoints<D>& liquid, const std::vector<Index>& liquidCellStart,
-                Real density, Real gravity, Real fallbackPressure);
+                Real density, const std::vector<Real>& cellPressureGradient);
 
     Real gapVolume(const Grid<D>& grid) const;          ///< m3, all slots
     Real injectedVolume() const { return injected_; }    ///< m3 since the start
@@ -51,6 +52,7 @@ private:
     struct Scan {
         Real bottom = 1e300;   ///< m, the lowest point's lower edge
         Index ref = -1;        ///< the lowest point
+        Index cell = -1;       ///< its cell
     };
     Index slotOf(const Grid<D>& grid, const Real* x) const;
     void slotCentre(const Grid<D>& grid, Index slot, Real* centre) const;  ///< horizontal coordinates

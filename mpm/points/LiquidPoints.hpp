@@ -4,11 +4,14 @@
 // A liquid point has a constant liquid mass m_L and stands for a mixture volume V: inside the sand
 // m_L = n rho_L V, in free water m_L = rho_L V. V follows the liquid's own strain,
 // V <- V (1 + d eps_L), which keeps that relation as the point moves between sand and free water.
-// Pore pressure p is gauge, compression positive; it is a cell quantity (one value per cell
-// each step) carried by the points so that it moves with the liquid (physics.md section 2).
-// Below the cavitation limit the water takes no more tension: what the liquid expands further is
-// a cavity (vapour, released air), a volumetric strain the point remembers and that a compression
-// closes at the limit's pressure before the water is pressed again.
+// Pore pressure p is gauge, compression positive. The water's state is a cell's (one pressure
+// and gradient, or one cavity, per cell each step, physics.md section 2); each point holds its
+// cell's field where it stands, p_c + grad p_c . (x - x_c), so that the state moves with the
+// liquid into the next step's cells. That is an extrapolation of the cell's field: a point's
+// pressure can sit below the cavitation limit; the cells' water never does.
+// Below the cavitation limit the water takes no more tension: what it expands further is a
+// cavity (vapour, released air), a volumetric strain of the water the point carries and that a
+// compression closes at the limit's pressure before the water is pressed again.
 #include <vector>
 
 #include "points/PointSet.hpp"
@@ -25,7 +28,7 @@ struct LiquidPoints {
     std::vector<Real> volume;     ///< m3, mixture volume V
     std::vector<Real> pressure;   ///< Pa, pore pressure (gauge, compression positive)
     std::vector<int> state;       ///< LiquidFlags, set each step
-    std::vector<Real> cavity;     ///< -, volumetric strain opened at the cavitation limit (>= 0)
+    std::vector<Real> cavity;     ///< -, the water's volumetric strain opened at the cavitation limit (>= 0)
 
     ShapeCache<D> shape;          ///< per-step scratch
     std::vector<Real> weight;     ///< m3, integration weight V* (per step, see the solver)

@@ -34,7 +34,7 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
         }
     }
     if (config_.gate.mode != GateMode::Closed)
-        chamber_.inject(grid_, liquid_, liquidCellStart_, config_.liquid.density, config_.gravity, gatePressure_);
+        chamber_.inject(grid_, liquid_, liquidCellStart_, config_.liquid.density, cellPressureGradient_);
 
     time_ += dt_;
     ++steps_;

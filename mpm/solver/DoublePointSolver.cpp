@@ -115,6 +115,7 @@ void DoublePointSolver<D>::allocate() {
     counts_.assign(nc + 1, 0);
     cellActive_.assign(nc, 0);
     cellSubmerged_.assign(nc, 0);
+    cellOpenToAir_.assign(nc, 0);
     cellFluidised_.assign(nc, 0);
     cellStressFree_.assign(nc, 0);
     cellSandSurface_.assign(nc, 0);

@@ -232,7 +232,6 @@ void DoublePointSolver<D>::updatePressure() {
     const Real KL = config_.liquid.bulkModulus, dt = dt_;
     const Real pMin = config_.liquid.cavitationPressure;
     const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
-    const Index up = grid_.cellStride(D - 1), rows = grid_.cells(D - 1);
     forAllCells(grid_.numCells(), liquidCellStart_, [&](Index c) {
         if (liquidCellStart_[c + 1] == liquidCellStart_[c]) return;
         Real div = 0;
@@ -243,16 +242,11 @@ void DoublePointSolver<D>::updatePressure() {
                 div += gN * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
             }
         });
-        // the water's top cells are open to the air (no wet cell above, or the overflow's row):
-        // they take no suction, and what they expand is their surface rising, not a cavity, so
-        // none is kept. Kept there, the top row's water at p ~ 0 gathered cavities from every
-        // ripple and the gate's flux strayed 1.9 % from the filter's in the side-by-side gravels
-        // Sand's pores are saturated (the bed is under its water throughout): a cell holding sand
-        // is never open to the air, however few liquid points it holds at the moment. Vented,
-        // a water-starved cell by the wall of piping2D's loosened bed held p = 0 while its
-        // neighbours' pressure grew to 70 kPa, and a solid point left at 726 m/s (13.38 s)
-        const bool holdsSand = solidCellStart_[c + 1] > solidCellStart_[c];
-        const bool openToAir = (!cellSubmerged_[c] && !holdsSand) || (c / up) % rows + 1 == overflowRow_;
+        // the water's top cells are open to the air (classifyCells): they take no suction, and
+        // what they expand is their surface rising, not a cavity, so none is kept. Kept there,
+        // the top row's water at p ~ 0 gathered cavities from every ripple and the gate's flux
+        // strayed 1.9 % from the filter's in the side-by-side gravels
+        const bool openToAir = cellOpenToAir_[c];
         const Real limit = openToAir ? std::max(pMin, Real(0)) : pMin;
         // the cell's water (computeForces) pressed by the mixture's strain, which is the water's
         // over n_c: beyond the limit a cavity opens, which a compression closes before it
@@ -271,13 +265,16 @@ void DoublePointSolver<D>::updatePressure() {
         const IVec<D> cc = grid_.cellCoords(c);
         for (int a = 0; a < D; ++a) centre[a] = grid_.cellCentre(cc[a]);
         const Real* grad = &cellPressureGradient_[c * D];
+        // The cavity the points keep decides how the next step reads them back (computeForces):
+        // with none, along the gradient; so the gradient goes on exactly where none is kept.
+        const Real cavity = openToAir ? 0 : water.cavity;
         for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
             Real pressure = water.pressure;
-            if (water.cavity == 0)
+            if (cavity == 0)
                 for (int a = 0; a < D; ++a) pressure += grad[a] * (liquid_.x[p * D + a] - centre[a]);
             const bool surface = liquid_.state[p] == kFreeSurfaceLiquid;
             liquid_.pressure[p] = zeroSurface && surface ? 0 : pressure;
-            liquid_.cavity[p] = surface || openToAir ? 0 : water.cavity;
+            liquid_.cavity[p] = cavity;
         }
     });
 }

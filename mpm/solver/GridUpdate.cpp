@@ -47,9 +47,10 @@ void DoublePointSolver<D>::computeForces() {
     // p = p_c + grad p_c . (x - x_c), or a cavity at the limit (updatePressure sets its points so).
     // Points that crossed in from other cells bring their old cells' field at where they are now;
     // each is taken along this cell's gradient to the centre, and the cell's water is where the
-    // V*-weighted mean of their strains puts it (physics/Cavitation.hpp),
-    //   e_c = sum e(p - grad p_c . (x - x_c), c) V* / sum V*,  (p_c, c_c) = the water at e_c,
-    // which conserves the water's volume as they mix. Without cavities p_c is the points' mean
+    // mean of their strains, weighted by their water, puts it (physics/Cavitation.hpp),
+    //   e_c = sum e(p - grad p_c . (x - x_c), c) m_L / sum m_L,  (p_c, c_c) = the water at e_c,
+    // which conserves the water's volume as they mix (weighted by V*, a point in sand counted
+    // 1/n times its water). The limit is the cell's: zero suction where it is open to the air. Without cavities p_c is the points' mean
     // taken to the centre: it does not depend on where in the cell the points happen to be. The
     // plain mean did: at an overflow, a point leaving the top cell (the one with the lowest
     // pressure) raised the cell's pressure by a few Pa, a kick that showed as a 3 % dip of case
@@ -59,7 +60,7 @@ void DoublePointSolver<D>::computeForces() {
     // of Terzaghi's column and blew up.
     const Real KL = config_.liquid.bulkModulus, pMin = config_.liquid.cavitationPressure;
     forAllCells(nc, liquidCellStart_, [&](Index c) {
-        Real strain = 0, w = 0, centre[D];
+        Real strain = 0, water = 0, w = 0, centre[D];
         const IVec<D> cc = grid_.cellCoords(c);
         for (int a = 0; a < D; ++a) centre[a] = grid_.cellCentre(cc[a]);
         const Real* grad = &cellPressureGradient_[c * D];
@@ -67,13 +68,15 @@ void DoublePointSolver<D>::computeForces() {
             Real atCentre = liquid_.pressure[p];
             if (liquid_.cavity[p] == 0)  // a cavity's water is at the limit throughout its cell
                 for (int a = 0; a < D; ++a) atCentre -= grad[a] * (liquid_.x[p * D + a] - centre[a]);
-            strain += waterStrain({atCentre, liquid_.cavity[p]}, KL) * liquid_.weight[p];
+            strain += waterStrain({atCentre, liquid_.cavity[p]}, KL) * liquid_.mass[p];
+            water += liquid_.mass[p];
             w += liquid_.weight[p];
         }
-        const CavitatingWater water = waterAtStrain(w > 0 ? strain / w : 0.0, KL, pMin);
+        const Real limit = cellOpenToAir_[c] ? std::max(pMin, Real(0)) : pMin;
+        const CavitatingWater state = waterAtStrain(water > 0 ? strain / water : 0.0, KL, limit);
         cellWeight_[c] = w;
-        cellPressure_[c] = w > 0 ? water.pressure : 0.0;
-        cellCavity_[c] = w > 0 ? water.cavity : 0.0;
+        cellPressure_[c] = w > 0 ? state.pressure : 0.0;
+        cellCavity_[c] = w > 0 ? state.cavity : 0.0;
         Real n = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int) { n += porosity_[i] / (1 << D); });
         cellPorosity_[c] = n;
