@@ -179,7 +179,7 @@ private:
     std::vector<Index> solidCellStart_, liquidCellStart_, counts_;
     std::vector<char> cellActive_, cellSubmerged_, cellFluidised_, cellStressFree_, cellSandSurface_;
     /// the water's top cell of its column, free of sand, or a sand-free cell of the overflow's row:
-    /// its water is under the air and takes no suction (classifyCells, GridToPoints.cpp)
+    /// its water is under the air and takes no suction (classifyCells in PointsToGrid.cpp)
     std::vector<char> cellOpenToAir_;
     std::vector<Real> cellDiffusivity_;
     std::vector<Real> cellLiquidVolume_, cellFill_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,

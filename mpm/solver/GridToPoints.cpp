@@ -273,7 +273,7 @@ void DoublePointSolver<D>::updatePressure() {
             if (cavity == 0)
                 for (int a = 0; a < D; ++a) pressure += grad[a] * (liquid_.x[p * D + a] - centre[a]);
             const bool surface = liquid_.state[p] == kFreeSurfaceLiquid;
-            liquid_.pressure[p] = zeroSurface && surface ? 0 : pressure;
+            liquid_.pressure[p] = zeroSurface && surface && openToAir ? 0 : pressure;  // p = 0 only with no cavity
             liquid_.cavity[p] = cavity;
         }
     });

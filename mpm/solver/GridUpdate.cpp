@@ -50,8 +50,8 @@ void DoublePointSolver<D>::computeForces() {
     // mean of their strains, weighted by their water, puts it (physics/Cavitation.hpp),
     //   e_c = sum e(p - grad p_c . (x - x_c), c) m_L / sum m_L,  (p_c, c_c) = the water at e_c,
     // which conserves the water's volume as they mix (weighted by V*, a point in sand counted
-    // 1/n times its water). The limit is the cell's: zero suction where it is open to the air. Without cavities p_c is the points' mean
-    // taken to the centre: it does not depend on where in the cell the points happen to be. The
+    // 1/n times its water). The limit is the cell's: zero suction where it is open to the air.
+    // Without cavities p_c is the points' mean taken to the centre: it does not depend on where in the cell the points happen to be. The
     // plain mean did: at an overflow, a point leaving the top cell (the one with the lowest
     // pressure) raised the cell's pressure by a few Pa, a kick that showed as a 3 % dip of case
     // B's filter velocity; in 2D the points' strands sample the cells unevenly. The gradient is the

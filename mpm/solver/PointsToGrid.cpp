@@ -138,22 +138,23 @@ void DoublePointSolver<D>::classifyCells() {
             liquid_.state[p] = (!above && thin) ? kFreeSurfaceLiquid : kSubmergedLiquid;
         }
     });
-    // Which cells' water is under the air: scanned down each column of cells, the first cell
-    // without sand below which nothing is wet, that is, no cell above is a quarter wet or holds
-    // sand (sand's pores are saturated, however few liquid points a loosened cell holds at the
-    // moment), and the cells of the overflow's row that hold no sand. They take no suction and keep
+    // Which cells' water is under the air: scanned down each column of cells, a cell without
+    // sand and without sand anywhere above it (sand's pores are saturated, however few liquid
+    // points a loosened cell holds at the moment) whose cell above is under a quarter wet, and
+    // the cells of the overflow's row that hold no sand. Spray above an air gap does not close the
+    // surface below it (only the cell just above counts for water). They take no suction and keep
     // no cavity (updatePressure). Decided cell by cell (no wet cell just above), a sand-free pocket
     // under a water-starved cell inside piping2D's bed vented, and so did a starved sand cell by
     // the wall: it held p = 0 while its neighbours rose to 70 kPa, and a solid point left at
     // 726 m/s (13.38 s).
     forAll(up, [&](Index column) {
-        bool wetAbove = false;
+        bool sandAbove = false;
         for (Index row = rows; row-- > 0;) {
             const Index c = column + row * up;
             const bool holdsSand = solidCellStart_[c + 1] > solidCellStart_[c];
             const bool overflowRow = row + 1 == overflowRow_;
-            cellOpenToAir_[c] = !holdsSand && (overflowRow || (!wetAbove && !cellSubmerged_[c]));
-            wetAbove = wetAbove || holdsSand || cellFill_[c] >= kSubmergingFill;
+            sandAbove = sandAbove || holdsSand;
+            cellOpenToAir_[c] = !sandAbove && (overflowRow || !cellSubmerged_[c]);
         }
     });
     // The overflow's top cells count as full only while the water stands there: fallen a cell

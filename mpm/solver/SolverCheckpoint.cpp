@@ -153,9 +153,10 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     if (!data.has("cavity_is_water_strain")) {
         const auto held = std::count_if(liquid_.cavity.begin(), liquid_.cavity.end(), [](Real c) { return c > 0; });
         if (held > 0)
-            std::cerr << "warning: the checkpoint was written before cavities were strains of the water (2026-12-05): "
-                      << held << " liquid points hold one, read as the water's strain; in sand that is the "
-                         "porosity times the cavity's strain of the water, so they close early\n";
+            std::cerr << "warning: the checkpoint does not say what its cavities measure (written before 2026-12-05's "
+                      << "eec36d6): " << held << " liquid points hold one, read as strains of the water; if it was "
+                         "written before c94904a they are mixture strains, in sand the porosity times the water's, "
+                         "and close early\n";
     }
     requireCodes(solid_.state, 2, "solid state");
     requireCodes(solid_.material, static_cast<int>(materials_.size()), "material");

@@ -2,8 +2,8 @@
 // meet in it, some with a cavity and some pressed, mix so that the water's volume is kept. The
 // cell's water strain is the mean of its points' strains e = c - p / K_L weighted by their water
 // (liquid mass), and its pressure the water at that strain, -K_L e above the cavitation limit.
-// Weighted by the points' mixture volumes instead, a point from the free water (m = rho V) counts
-// 1/n times a point in sand (m = n rho V) of the same water: the mixing then makes or loses water.
+// Weighted by the points' mixture volumes instead, a point from the free water (V = m / rho) counts
+// n times a point in sand (V = m / (n rho)) of the same water: the mixing then makes or loses water.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -37,7 +37,7 @@ TEST(CellWater, ACavityAndPressedWaterMeetingInACellKeepTheirVolume) {
     ASSERT_GE(inCell.size(), 2u);
 
     // One point at the limit holding a cavity, the others pressed; the cavity's point as if it came
-    // from the free water (its mixture volume 1/n times its water's share, here twice the others').
+    // from the free water (its mixture volume n times that of a sand point of the same water).
     // No gradient, so each point's pressure is its water's at the centre.
     CheckpointData data;
     solver.saveState(data);
@@ -49,7 +49,7 @@ TEST(CellWater, ACavityAndPressedWaterMeetingInACellKeepTheirVolume) {
         pressure[p] = k == 0 ? pMin : pressed;
         cavity[p] = k == 0 ? open : 0.0;
     }
-    volume[inCell[0]] *= 2;
+    volume[inCell[0]] *= c.material("sand").porosity;
     data.put("liquid_field3", volume);
     data.put("liquid_field4", pressure);
     data.put("liquid_field6", cavity);
