@@ -25,6 +25,7 @@
 // LiquidStateSwitch.cpp (4b), FrontDiffusion.cpp (4c), GridToPoints.cpp (5, 6), BoundaryExchange.cpp (7), HealthCheck.cpp (8); set-up and the step itself here in
 // DoublePointSolver.cpp, the measurements in ColumnMeasurements.cpp, checkpoints in
 // SolverCheckpoint.cpp.
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -178,9 +179,14 @@ private:
     // cells
     std::vector<Index> solidCellStart_, liquidCellStart_, counts_;
     std::vector<char> cellActive_, cellSubmerged_, cellFluidised_, cellStressFree_, cellSandSurface_;
-    /// the water's top cell of its column, free of sand, or a sand-free cell of the overflow's row:
-    /// its water is under the air and takes no suction (classifyCells in PointsToGrid.cpp)
+    /// the water's surface (no sand in or above the cell, the cell above under a quarter wet) or a
+    /// sand-free cell of the overflow's row: its water is under the air (classifyCells in PointsToGrid.cpp)
     std::vector<char> cellOpenToAir_;
+    /// Pa, the lowest pressure a cell's water takes: no suction where it is open to the air
+    Real cellLimit(Index c) const {
+        const Real pMin = config_.liquid.cavitationPressure;
+        return cellOpenToAir_[c] ? std::max(pMin, Real(0)) : pMin;
+    }
     std::vector<Real> cellDiffusivity_;
     std::vector<Real> cellLiquidVolume_, cellFill_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,
         cellPressureGradient_, cellCavity_;

@@ -230,7 +230,6 @@ void DoublePointSolver<D>::updatePressure() {
     // (compressible liquid, incompressible grains; the cell average avoids volumetric locking).
     // K_L is a numerical stiffness: this is artificial compressibility, taken at a fixed place.
     const Real KL = config_.liquid.bulkModulus, dt = dt_;
-    const Real pMin = config_.liquid.cavitationPressure;
     const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
     forAllCells(grid_.numCells(), liquidCellStart_, [&](Index c) {
         if (liquidCellStart_[c + 1] == liquidCellStart_[c]) return;
@@ -247,12 +246,11 @@ void DoublePointSolver<D>::updatePressure() {
         // the top row's water at p ~ 0 gathered cavities from every ripple and the gate's flux
         // strayed 1.9 % from the filter's in the side-by-side gravels
         const bool openToAir = cellOpenToAir_[c];
-        const Real limit = openToAir ? std::max(pMin, Real(0)) : pMin;
         // the cell's water (computeForces) pressed by the mixture's strain, which is the water's
         // over n_c: beyond the limit a cavity opens, which a compression closes before it
         // presses the water (physics/Cavitation.hpp)
         const CavitatingWater water =
-            pressWater({cellPressure_[c], cellCavity_[c]}, -KL / cellPorosity_[c] * dt * div, KL, limit);
+            pressWater({cellPressure_[c], cellCavity_[c]}, -KL / cellPorosity_[c] * dt * div, KL, cellLimit(c));
         // Each point takes the cell's field where it now is, p_c + grad p_c . (x - x_c): the field
         // the liquid moves through, so that a point entering the next cell brings that cell's
         // pressure instead of kicking its mean by a cell's drop. Points carried their own

@@ -51,14 +51,15 @@ void DoublePointSolver<D>::computeForces() {
     //   e_c = sum e(p - grad p_c . (x - x_c), c) m_L / sum m_L,  (p_c, c_c) = the water at e_c,
     // which conserves the water's volume as they mix (weighted by V*, a point in sand counted
     // 1/n times its water). The limit is the cell's: zero suction where it is open to the air.
-    // Without cavities p_c is the points' mean taken to the centre: it does not depend on where in the cell the points happen to be. The
+    // Without cavities p_c is the points' mean taken to the centre: it does not depend on where in
+    // the cell the points happen to be. The
     // plain mean did: at an overflow, a point leaving the top cell (the one with the lowest
     // pressure) raised the cell's pressure by a few Pa, a kick that showed as a 3 % dip of case
     // B's filter velocity; in 2D the points' strands sample the cells unevenly. The gradient is the
     // last step's (part of the state, checkpointed), the one updatePressure set the points with:
     // taken from this step's plain means instead, the correction extrapolated at the drained top
     // of Terzaghi's column and blew up.
-    const Real KL = config_.liquid.bulkModulus, pMin = config_.liquid.cavitationPressure;
+    const Real KL = config_.liquid.bulkModulus;
     forAllCells(nc, liquidCellStart_, [&](Index c) {
         Real strain = 0, water = 0, w = 0, centre[D];
         const IVec<D> cc = grid_.cellCoords(c);
@@ -72,8 +73,7 @@ void DoublePointSolver<D>::computeForces() {
             water += liquid_.mass[p];
             w += liquid_.weight[p];
         }
-        const Real limit = cellOpenToAir_[c] ? std::max(pMin, Real(0)) : pMin;
-        const CavitatingWater state = waterAtStrain(water > 0 ? strain / water : 0.0, KL, limit);
+        const CavitatingWater state = waterAtStrain(water > 0 ? strain / water : 0.0, KL, cellLimit(c));
         cellWeight_[c] = w;
         cellPressure_[c] = w > 0 ? state.pressure : 0.0;
         cellCavity_[c] = w > 0 ? state.cavity : 0.0;
