@@ -25,7 +25,12 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
             checkSolidBelow(zOver, solid_, time_, [&] { return sandSurface(); });
         else
             carrySandOut(zOver);
-        const Real out = removeLiquidAbove(zOver, config_.liquid.density, liquid_, dropFlags_);
+        // the points that began the step in the row under the measured rows or above (they move
+        // less than a cell in a step): the rows' water comes from them
+        const Index up = grid_.cellStride(D - 1);
+        const Index from = liquidCellStart_[std::max<Index>(overflowRow_ - kRimRows - 1, 0) * up];
+        const Real out = spillOverRim(grid_, overflowRow_, kRimRows, from, config_.points.liquidPerCell,
+                                      config_.liquid.density, liquid_, dropFlags_, spillOrder_);
         if (out > 0) {
             outflowVolume_ += out;
             // the cell lists are stale now: rebuild them for the chamber's scan below (the

@@ -141,6 +141,7 @@ void DoublePointSolver<D>::allocate() {
     solid_.shape.reserve(solid_.size());
     solid_.stressReturn.assign(solid_.size(), 0);
     dropFlags_.reserve(liquidCapacity);
+    spillOrder_.reserve(liquidCapacity);
 }
 
 // ---------------------------------------------------------------------------------------------

@@ -6,6 +6,7 @@
 #include <type_traits>
 
 #include "solver/DoublePointSolver.hpp"
+#include "boundary/Overflow.hpp"
 #include "grid/ShapeFunctions.hpp"
 #include "materials/StressTensor.hpp"
 #include "solver/Parallel.hpp"
@@ -163,27 +164,21 @@ void DoublePointSolver<D>::classifyCells() {
     // overflow before the run, io/CaseRules.cpp).
     // The water is measured over the top two rows, from the points' extents (a point's water spans
     // z +- V / (2 a), a its footprint), and the run stops when they hold less than one row's worth.
-    // A liquid point leaves whole when its centre passes the rim, so the row under the rim loses up
-    // to half a point of water at once: half a cell in sand (two points a cell), more where a
+    // A liquid point spills whole (the weir, boundary/Overflow.hpp), so the row under the rim loses
+    // up to half a point of water at once: half a cell in sand (two points a cell), more where a
     // suspension's points have grown. Counted by centres in the top row alone, the Deltares
     // column through a 10 mm tube stopped with its water at the rim all along: a bed heaving
     // against the rim read 49.7 % each time its top point left (t = 7.75 s), and, fluidised, a
     // point of 0.83 cells leaving left 46.7 % (t = 14.17 s).
     if (overflowRow_ > 0) {
-        Real water = 0, room = 0;
-        const Index lowRow = overflowRow_ >= 2 ? overflowRow_ - 2 : 0;
+        Real room = 0;
+        const Index lowRow = std::max<Index>(overflowRow_ - kRimRows, 0);
         const Index first = lowRow * up, last = overflowRow_ * up;  // cells of the rows measured
-        const Real zLow = lowRow * grid_.h(), zHigh = overflowRow_ * grid_.h();
         for (Index c = first; c < last; ++c) room += grid_.cellVolume(c);
         // their points and those of the row below, whose extents reach into them
         const Index from = lowRow >= 1 ? (lowRow - 1) * up : first;
-        for (Index p = liquidCellStart_[from]; p < liquidCellStart_[last]; ++p) {
-            const Real z = liquid_.x[p * D + D - 1];
-            const Real area = grid_.pointFootprint(&liquid_.x[p * D], config_.points.liquidPerCell);
-            const Real half = 0.5 * liquid_.volume[p] / area;
-            const Real inside = std::min(z + half, zHigh) - std::max(z - half, zLow);
-            if (inside > 0) water += area * inside;
-        }
+        const Real water = waterBetween(grid_, liquid_, liquidCellStart_[from], liquidCellStart_[last],
+                                        lowRow * grid_.h(), overflowRow_ * grid_.h(), config_.points.liquidPerCell);
         const Real rowsMeasured = static_cast<Real>(overflowRow_ - lowRow);
         const Real missing = std::max(Real(0), room - water) / room * rowsMeasured;  // in rows
         QS_CHECK(missing <= 1,

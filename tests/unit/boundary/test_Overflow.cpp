@@ -1,0 +1,107 @@
+// The overflow's weir (boundary/Overflow.hpp): the column spills what its water holds above the
+// rim on average, from the highest points down. A crest over a trough stays; a level surface
+// above the rim goes, as it did when every point past the rim was cut.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "boundary/Overflow.hpp"
+#include "grid/Grid.hpp"
+#include "points/LiquidPoints.hpp"
+
+using namespace qs;
+
+namespace {
+
+constexpr double kH = 0.01, kRho = 1000.0;
+constexpr int kColumns = 4, kRows = 6, kPerCell = 2;
+constexpr Index kRimRow = 4;                   // the rim on the node row z = 0.04 m
+constexpr double kRim = kRimRow * kH;
+
+// Free water of 4 x 6 cells, 2 x 2 points a cell, out of plane 1 m: each point holds h^2 / 4 of water.
+struct Column {
+    Grid<2> grid{IVec<2>{kColumns, kRows}, kH, kColumns * kH, false, kPerCell};
+    LiquidPoints<2> liquid;
+    std::vector<char> drop;
+    std::vector<Index> order;
+
+    void add(double x, double z) {
+        const double V = kH * kH / (kPerCell * kPerCell);
+        liquid.x.insert(liquid.x.end(), {x, z});
+        liquid.v.insert(liquid.v.end(), {0.0, 0.0});
+        liquid.mass.push_back(kRho * V);
+        liquid.volume.push_back(V);
+        liquid.pressure.push_back(0.0);
+        liquid.state.push_back(kSubmergedLiquid);
+        liquid.cavity.push_back(0.0);
+    }
+    /// a layer of points (centres at z) over the columns of points [from, to)
+    void layer(double z, int from, int to) {
+        for (int i = from; i < to; ++i) add((i + 0.5) * kH / kPerCell, z);
+    }
+    /// water up to the rim: layers at rim - h/4, rim - 3h/4, ... over every column
+    void fillToRim(int skipTopFrom = kColumns * kPerCell) {
+        for (int k = 0; k < kRimRow * kPerCell; ++k) {
+            const double z = (k + 0.5) * kH / kPerCell;
+            layer(z, 0, k == kRimRow * kPerCell - 1 ? skipTopFrom : kColumns * kPerCell);
+        }
+    }
+    double spill() { return spillOverRim(grid, kRimRow, 2, 0, kPerCell, kRho, liquid, drop, order); }
+    double pointWater() const { return kH * kH / (kPerCell * kPerCell); }
+    int countAbove(double z) const {
+        int n = 0;
+        for (std::size_t p = 0; p < liquid.size(); ++p) n += liquid.x[2 * p + 1] > z;
+        return n;
+    }
+};
+
+constexpr int kHalf = kColumns * kPerCell / 2;  // the points across half the width
+
+}  // namespace
+
+TEST(OverflowWeir, ALevelSurfaceAtTheRimSpillsNothing) {
+    Column c;
+    c.fillToRim();
+    EXPECT_EQ(c.spill(), 0.0);
+    EXPECT_EQ(c.liquid.size(), static_cast<std::size_t>(kColumns * kPerCell * kRimRow * kPerCell));
+}
+
+TEST(OverflowWeir, ALevelSurfaceHalfACellAboveTheRimSpillsItsLayer) {
+    Column c;
+    c.fillToRim();
+    c.layer(kRim + kH / 4, 0, 2 * kHalf);  // a full layer over the rim
+    const double spilled = c.spill();
+    EXPECT_NEAR(spilled, 2 * kHalf * c.pointWater(), 1e-15);
+    EXPECT_EQ(c.countAbove(kRim), 0);
+}
+
+TEST(OverflowWeir, ACrestOverATroughStaysWhileTheMeanIsAtTheRim) {
+    Column c;
+    c.fillToRim(kHalf);                    // the right half's top layer missing: a trough
+    c.layer(kRim + kH / 4, 0, kHalf);      // its water as a crest over the left half
+    EXPECT_EQ(c.spill(), 0.0);             // cutting every point past the rim spilled the crest
+    EXPECT_EQ(c.countAbove(kRim), kHalf);
+}
+
+TEST(OverflowWeir, ACrestTallerThanTheTroughSpillsItsExcessFromTheTop) {
+    Column c;
+    c.fillToRim(kHalf);
+    c.layer(kRim + kH / 4, 0, kHalf);
+    c.layer(kRim + 3 * kH / 4, 0, kHalf);  // a second layer: one layer's worth over the room
+    const double spilled = c.spill();
+    EXPECT_NEAR(spilled, kHalf * c.pointWater(), 1e-15);
+    EXPECT_EQ(c.countAbove(kRim + kH / 2), 0);   // the highest layer went
+    EXPECT_EQ(c.countAbove(kRim), kHalf);        // the lower one stays over the trough
+}
+
+TEST(OverflowWeir, SprayMoreThanACellAboveTheRimSpillsWhateverTheRoom) {
+    Column c;
+    c.fillToRim(kHalf);                   // a trough of four points' room
+    c.add(0.5 * kH, kRim + 1.5 * kH);     // a drop thrown a cell and a half over the rim
+    c.add(0.5 * kH, kRim + 0.5 * kH);     // and one within a cell of it
+    const double spilled = c.spill();
+    EXPECT_NEAR(spilled, c.pointWater(), 1e-15);
+    EXPECT_EQ(c.countAbove(kRim + kH), 0);
+    EXPECT_EQ(c.countAbove(kRim), 1);
+}
