@@ -1,6 +1,6 @@
-// The overflow's weir (boundary/Overflow.hpp): the column spills what its water holds above the
-// rim on average, from the highest points down. A crest over a trough stays; a level surface
-// above the rim goes, as it did when every point past the rim was cut.
+// The overflow's weir (boundary/Overflow.hpp): a liquid point past the rim spills, as a level
+// surface spills over it, except the crest water the two rows under the rim need once they lack
+// more than half a row (a level surface lacks that much when its top layer has just spilled).
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -40,12 +40,12 @@ struct Column {
     void layer(double z, int from, int to) {
         for (int i = from; i < to; ++i) add((i + 0.5) * kH / kPerCell, z);
     }
-    /// water up to the rim: layers at rim - h/4, rim - 3h/4, ... over every column
-    void fillToRim(int skipTopFrom = kColumns * kPerCell) {
-        for (int k = 0; k < kRimRow * kPerCell; ++k) {
-            const double z = (k + 0.5) * kH / kPerCell;
-            layer(z, 0, k == kRimRow * kPerCell - 1 ? skipTopFrom : kColumns * kPerCell);
-        }
+    /// water up to the rim, layers at rim - h/4, rim - 3h/4, ..., without the top `trough`
+    /// layers over the right half: a trough of trough / 4 rows
+    void fillToRim(int trough = 0) {
+        const int layers = kRimRow * kPerCell;
+        for (int k = 0; k < layers; ++k)
+            layer((k + 0.5) * kH / kPerCell, 0, k >= layers - trough ? kColumns * kPerCell / 2 : kColumns * kPerCell);
     }
     double spill() { return spillOverRim(grid, kRimRow, 2, 0, kPerCell, kRho, liquid, drop, order); }
     double pointWater() const { return kH * kH / (kPerCell * kPerCell); }
@@ -76,32 +76,32 @@ TEST(OverflowWeir, ALevelSurfaceHalfACellAboveTheRimSpillsItsLayer) {
     EXPECT_EQ(c.countAbove(kRim), 0);
 }
 
-TEST(OverflowWeir, ACrestOverATroughStaysWhileTheMeanIsAtTheRim) {
+TEST(OverflowWeir, ACrestOverATroughOfHalfARowSpillsAsALevelSurfaceDoes) {
     Column c;
-    c.fillToRim(kHalf);                    // the right half's top layer missing: a trough
+    c.fillToRim(2);                        // the right half's top row empty: half a row lacking
     c.layer(kRim + kH / 4, 0, kHalf);      // its water as a crest over the left half
-    EXPECT_EQ(c.spill(), 0.0);             // cutting every point past the rim spilled the crest
+    c.layer(kRim + 3 * kH / 4, 0, kHalf);
+    EXPECT_NEAR(c.spill(), 2 * kHalf * c.pointWater(), 1e-15);
+    EXPECT_EQ(c.countAbove(kRim), 0);
+}
+
+TEST(OverflowWeir, ACrestOverADeeperTroughFallsBackIntoItUpToWhatItLacksBeyondHalfARow) {
+    Column c;
+    c.fillToRim(3);                        // three layers over the right half: 0.75 rows lacking
+    c.layer(kRim + kH / 4, 0, kHalf);      // a crest of two layers over the left half
+    c.layer(kRim + 3 * kH / 4, 0, kHalf);
+    // a quarter row is held, the lower layer; cutting every point past the rim spilled both
+    EXPECT_NEAR(c.spill(), kHalf * c.pointWater(), 1e-15);
+    EXPECT_EQ(c.countAbove(kRim + kH / 2), 0);
     EXPECT_EQ(c.countAbove(kRim), kHalf);
 }
 
-TEST(OverflowWeir, ACrestTallerThanTheTroughSpillsItsExcessFromTheTop) {
+TEST(OverflowWeir, SprayMoreThanACellAboveTheRimSpillsWhateverTheRowsLack) {
     Column c;
-    c.fillToRim(kHalf);
-    c.layer(kRim + kH / 4, 0, kHalf);
-    c.layer(kRim + 3 * kH / 4, 0, kHalf);  // a second layer: one layer's worth over the room
-    const double spilled = c.spill();
-    EXPECT_NEAR(spilled, kHalf * c.pointWater(), 1e-15);
-    EXPECT_EQ(c.countAbove(kRim + kH / 2), 0);   // the highest layer went
-    EXPECT_EQ(c.countAbove(kRim), kHalf);        // the lower one stays over the trough
-}
-
-TEST(OverflowWeir, SprayMoreThanACellAboveTheRimSpillsWhateverTheRoom) {
-    Column c;
-    c.fillToRim(kHalf);                   // a trough of four points' room
+    c.fillToRim(3);
     c.add(0.5 * kH, kRim + 1.5 * kH);     // a drop thrown a cell and a half over the rim
     c.add(0.5 * kH, kRim + 0.5 * kH);     // and one within a cell of it
-    const double spilled = c.spill();
-    EXPECT_NEAR(spilled, c.pointWater(), 1e-15);
+    EXPECT_NEAR(c.spill(), c.pointWater(), 1e-15);
     EXPECT_EQ(c.countAbove(kRim + kH), 0);
     EXPECT_EQ(c.countAbove(kRim), 1);
 }
