@@ -1,5 +1,5 @@
-// Phase 7 of the double-point step: the reservoir advanced with the gate flux, outflow above the
-// overflow level, inflow injected at the chamber (physics.md section 2).
+// Phase 7 of the double-point step: the reservoir advanced with the gate flux, inflow injected at
+// the chamber, outflow over the overflow's weir (physics.md section 2).
 #include <algorithm>
 #include <cmath>
 #include <iostream>
@@ -19,6 +19,12 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
     gatePressure_ = gateLaw_.pressure(gateFlux_);
     reservoir_.advance(time_, dt_, gateFlux_);
 
+    // The chamber first, on the step's cell lists: its new water takes the field of the cell that
+    // set its reference point's pressure (updatePressure). Injected after the spill, on the lists
+    // rebuilt then, it took the gradient of the cell its reference had moved into.
+    if (config_.gate.mode != GateMode::Closed)
+        chamber_.inject(grid_, liquid_, liquidCellStart_, config_.liquid.density, cellPressureGradient_);
+
     if (config_.column.overflowLevel) {
         const Real zOver = *config_.column.overflowLevel;
         if (config_.column.sandOverflow == SandOverflow::Stop)
@@ -33,13 +39,11 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
                                       config_.liquid.density, liquid_, dropFlags_, spillOrder_);
         if (out > 0) {
             outflowVolume_ += out;
-            // the cell lists are stale now: rebuild them for the chamber's scan below (the
-            // weights wait for the next step's sort)
+            // the cell lists are stale now: rebuilt for what reads them between steps (the weights
+            // wait for the next step's sort)
             sortByCell(liquid_, liquidCellStart_, counts_);
         }
     }
-    if (config_.gate.mode != GateMode::Closed)
-        chamber_.inject(grid_, liquid_, liquidCellStart_, config_.liquid.density, cellPressureGradient_);
 
     time_ += dt_;
     ++steps_;
