@@ -9,7 +9,7 @@
 // Geometry of a column (vertical axis z, elevations measured from the gate plane z = 0):
 //
 //   z_top      -- top of the background grid
-//   overflow   -- the water above it on average spills (boundary/Overflow.hpp) and counts as outflow
+//   overflow   -- water passing it spills over a weir (boundary/Overflow.hpp) and counts as outflow
 //   water      -- initial free surface of the liquid
 //   sand top   -- filter + sum of layer thicknesses
 //   filter     -- the permeable gate: solid held, liquid passes (= chamber height)

@@ -31,10 +31,10 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
             checkSolidBelow(zOver, solid_, time_, [&] { return sandSurface(); });
         else
             carrySandOut(zOver);
-        // the points that began the step in the row under the measured rows or above (they move
-        // less than a cell in a step): the rows' water comes from them
+        // the points that began the step two rows under the measured rows or above: a point
+        // moves less than a cell in a step, and its water spans up to a cell about its centre
         const Index up = grid_.cellStride(D - 1);
-        const Index from = liquidCellStart_[std::max<Index>(overflowRow_ - kRimRows - 1, 0) * up];
+        const Index from = liquidCellStart_[std::max<Index>(overflowRow_ - kRimRows - 2, 0) * up];
         const Real out = spillOverRim(grid_, overflowRow_, kRimRows, from, config_.points.liquidPerCell,
                                       config_.liquid.density, liquid_, dropFlags_, spillOrder_);
         if (out > 0) {

@@ -209,7 +209,7 @@ private:
     BoundaryMasks<D> masks_;
     InflowChamber<D> chamber_;
     std::vector<char> dropFlags_;    ///< scratch of the outflow removal
-    std::vector<Index> spillOrder_;  ///< scratch of the overflow's weir: the points above the rim, highest first
+    std::vector<Index> spillOrder_;  ///< scratch of the overflow's weir: the points above the rim, lowest first
 
     LiquidStateRule stateRule_;
     GateLaw gateLaw_;
@@ -227,7 +227,8 @@ private:
     Real sandFloor_ = 0;  ///< m, where the sand is held on the filter: in the cell above it (Grid::firstInCell)
     Index overflowRow_ = -1;  ///< cell rows below the overflow level (-1: no overflow)
     /// the rows of cells under the rim over which the water's level there is measured: the overflow's
-    /// weir spills what stands over their room, and the run stops when they lack a row of water
+    /// weir holds crest water back while they lack more than half a row, and the run stops when they
+    /// lack a row
     static constexpr Index kRimRows = 2;
 };
 

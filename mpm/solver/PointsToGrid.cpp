@@ -175,9 +175,11 @@ void DoublePointSolver<D>::classifyCells() {
         const Index lowRow = std::max<Index>(overflowRow_ - kRimRows, 0);
         const Index first = lowRow * up, last = overflowRow_ * up;  // cells of the rows measured
         for (Index c = first; c < last; ++c) room += grid_.cellVolume(c);
-        // their points and those of the row below, whose extents reach into them
+        // their points, those of the row below and those of the row above, whose extents reach
+        // into them (the weir holds crest water there, straddling the rim)
         const Index from = lowRow >= 1 ? (lowRow - 1) * up : first;
-        const Real water = waterBetween(grid_, liquid_, liquidCellStart_[from], liquidCellStart_[last],
+        const Index to = std::min(last + up, nc);
+        const Real water = waterBetween(grid_, liquid_, liquidCellStart_[from], liquidCellStart_[to],
                                         lowRow * grid_.h(), overflowRow_ * grid_.h(), config_.points.liquidPerCell);
         const Real rowsMeasured = static_cast<Real>(overflowRow_ - lowRow);
         const Real missing = std::max(Real(0), room - water) / room * rowsMeasured;  // in rows

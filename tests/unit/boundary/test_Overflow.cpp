@@ -26,8 +26,8 @@ struct Column {
     std::vector<char> drop;
     std::vector<Index> order;
 
-    void add(double x, double z) {
-        const double V = kH * kH / (kPerCell * kPerCell);
+    void add(double x, double z, double size = 1.0) {
+        const double V = size * kH * kH / (kPerCell * kPerCell);
         liquid.x.insert(liquid.x.end(), {x, z});
         liquid.v.insert(liquid.v.end(), {0.0, 0.0});
         liquid.mass.push_back(kRho * V);
@@ -104,4 +104,34 @@ TEST(OverflowWeir, SprayMoreThanACellAboveTheRimSpillsWhateverTheRowsLack) {
     EXPECT_NEAR(c.spill(), c.pointWater(), 1e-15);
     EXPECT_EQ(c.countAbove(kRim + kH), 0);
     EXPECT_EQ(c.countAbove(kRim), 1);
+}
+
+TEST(OverflowWeir, ACrestStraddlingTheRimCountsWhollyAsCrest) {
+    Column c;
+    c.fillToRim(3);                        // 0.75 rows lacking: a quarter row, four points, to hold
+    c.layer(kRim + kH / 8, 0, kHalf);      // four points whose water reaches an eighth of a cell under the rim
+    EXPECT_EQ(c.spill(), 0.0);             // counted as present below the rim, one would have spilled
+    EXPECT_EQ(c.countAbove(kRim), kHalf);
+}
+
+TEST(OverflowWeir, HoldingStopsAtTheFirstPointThatDoesNotFit) {
+    Column c;
+    c.fillToRim(3);                        // room to hold four points' water
+    c.add(0.5 * kH, kRim + 0.1 * kH, 10);  // a suspension's point of ten: does not fit
+    c.add(1.5 * kH, kRim + 0.3 * kH);      // a small one above it would, but holding has stopped
+    EXPECT_NEAR(c.spill(), 11 * c.pointWater(), 1e-15);
+    EXPECT_EQ(c.countAbove(kRim), 0);
+}
+
+TEST(OverflowWeir, WaterBelowTheRimAfterTheSpilledPointsStaysInOrder) {
+    Column c;
+    c.fillToRim();
+    c.layer(kRim + kH / 4, 0, 2 * kHalf);  // a level layer over the rim: spills
+    c.add(0.5 * kH, 0.001);                // then, as the chamber appends it, new water at the bottom
+    c.add(1.5 * kH, 0.002);
+    const std::size_t before = c.liquid.size();
+    EXPECT_NEAR(c.spill(), 2 * kHalf * c.pointWater(), 1e-15);
+    ASSERT_EQ(c.liquid.size(), before - 2 * kHalf);
+    EXPECT_EQ(c.liquid.x[2 * (c.liquid.size() - 2) + 1], 0.001);
+    EXPECT_EQ(c.liquid.x[2 * (c.liquid.size() - 1) + 1], 0.002);
 }
