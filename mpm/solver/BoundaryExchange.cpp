@@ -23,7 +23,7 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
     // set its reference point's pressure (updatePressure). Injected after the spill, on the lists
     // rebuilt then, it took the gradient of the cell its reference had moved into.
     if (config_.gate.mode != GateMode::Closed)
-        chamber_.inject(grid_, liquid_, liquidCellStart_, config_.liquid.density, cellPressureGradient_);
+        chamber_.inject(grid_, liquid_, cells_.liquidStart, config_.liquid.density, water_.pressureGradient);
 
     if (config_.column.overflowLevel) {
         const Real zOver = *config_.column.overflowLevel;
@@ -34,14 +34,14 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
         // the points that began the step two rows under the measured rows or above: a point
         // moves less than a cell in a step, and its water spans up to a cell about its centre
         const Index up = grid_.cellStride(D - 1);
-        const Index from = liquidCellStart_[std::max<Index>(overflowRow_ - kRimRows - 2, 0) * up];
+        const Index from = cells_.liquidStart[std::max<Index>(overflowRow_ - kRimRows - 2, 0) * up];
         const Real out = spillOverRim(grid_, overflowRow_, kRimRows, from, config_.points.liquidPerCell,
                                       config_.liquid.density, liquid_, dropFlags_, spillOrder_);
         if (out > 0) {
             outflowVolume_ += out;
             // the cell lists are stale now: rebuilt for what reads them between steps (the weights
             // wait for the next step's sort)
-            sortByCell(liquid_, liquidCellStart_, counts_);
+            sortByCell(liquid_, cells_.liquidStart, cells_.counts);
         }
     }
 
@@ -62,7 +62,7 @@ void DoublePointSolver<D>::carrySandOut(Real zOver) {
     solidOutflowMass_ += mass;
     solid_.stressReturn.resize(solid_.size());  // per-step scratch, not a point field: kept in step
     warnedSandOut_ = true;  // once a run: not part of the state, so a repeated window keeps it
-    sortByCell(solid_, solidCellStart_, counts_);
+    sortByCell(solid_, cells_.solidStart, cells_.counts);
 }
 
 template void DoublePointSolver<1>::exchangeAtBoundaries();

@@ -33,9 +33,9 @@ Real DoublePointSolver<D>::footprintShare(Index node, const std::optional<Horizo
 
 template <int D>
 std::vector<Real> DoublePointSolver<D>::sandFeeding() const {
-    std::vector<Real> ratio(massS_.size(), -1.0);
+    std::vector<Real> ratio(nodes_.massS.size(), -1.0);
     for (std::size_t i = 0; i < ratio.size(); ++i)
-        if (slopeMass_[i] > 0) ratio[i] = massS_[i] / slopeMass_[i];
+        if (nodes_.slopeMass[i] > 0) ratio[i] = nodes_.massS[i] / nodes_.slopeMass[i];
     return ratio;
 }
 
@@ -63,10 +63,10 @@ ColumnState DoublePointSolver<D>::columnState() const {
         // reads the water's flux less the sliver's share of the grains' motion
         Real q = 0, a = 0;
         for (Index i = 0; i < grid_.numNodes(); ++i) {
-            if (grid_.nodeCoords(i)[D - 1] != row || massL_[i] <= 0) continue;
+            if (grid_.nodeCoords(i)[D - 1] != row || nodes_.massL[i] <= 0) continue;
             const Real w = nodeFootprint(grid_, i) * footprintShare(i, monitor.x, monitor.y);
             if (w <= 0) continue;
-            q += w * porosity_[i] * (velL_[i * D + D - 1] - fedWeight_[i * D + D - 1] * velS_[i * D + D - 1]);
+            q += w * nodes_.porosity[i] * (nodes_.velL[i * D + D - 1] - nodes_.fedWeight[i * D + D - 1] * nodes_.velS[i * D + D - 1]);
             a += w;
         }
         s.monitorFlux.push_back(a > 0 ? q / a : 0.0);
@@ -143,9 +143,9 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         Real pw = 0, w = 0;
         for (Index k = 0; k < perRow; ++k) {
             const Index c = r * perRow + k;
-            pw += cellPressure_[c] * cellWeight_[c];
-            w += cellWeight_[c];
-            row.liquidCount += static_cast<int>(liquidCellStart_[c + 1] - liquidCellStart_[c]);
+            pw += water_.pressure[c] * water_.weight[c];
+            w += water_.weight[c];
+            row.liquidCount += static_cast<int>(cells_.liquidStart[c + 1] - cells_.liquidStart[c]);
         }
         row.porePressure = w > 0 ? pw / w : 0.0;
     }
@@ -177,7 +177,7 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         Real q = 0, a = 0;
         for (Index i = r * grid_.nodeStride(D - 1); i < (r + 1) * grid_.nodeStride(D - 1); ++i) {
             const Real wgt = nodeFootprint(grid_, i);
-            q += wgt * porosity_[i] * (velL_[i * D + D - 1] - fedWeight_[i * D + D - 1] * velS_[i * D + D - 1]);
+            q += wgt * nodes_.porosity[i] * (nodes_.velL[i * D + D - 1] - nodes_.fedWeight[i * D + D - 1] * nodes_.velS[i * D + D - 1]);
             a += wgt;
         }
         row.filterVelocity = a > 0 ? q / a : 0.0;
@@ -198,9 +198,9 @@ SandCells DoublePointSolver<D>::sandCells() const {
     s.state.assign(cells, CellSand::None);
     s.porosity.assign(cells, std::nan(""));
     for (Index c = 0; c < cells; ++c) {
-        if (solidCellStart_[c] == solidCellStart_[c + 1]) continue;
-        s.state[c] = cellFluidised_[c] ? CellSand::Fluidised : CellSand::Solid;
-        s.porosity[c] = cellSandPorosity_[c];
+        if (cells_.solidStart[c] == cells_.solidStart[c + 1]) continue;
+        s.state[c] = sand_.fluidised[c] ? CellSand::Fluidised : CellSand::Solid;
+        s.porosity[c] = sand_.porosity[c];
     }
     // the water crossing the filter plane per column: q = n (v_L - w v_S) at the base row's lower
     // nodes (as the monitors read it), each node weighted by its share of the cell's lower face
@@ -215,7 +215,7 @@ SandCells DoublePointSolver<D>::sandCells() const {
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             if ((corner >> (D - 1)) & 1) return;  // an upper node
             const Real w = grid_.cellShare(c, corner);
-            q += w * porosity_[i] * (velL_[i * D + D - 1] - fedWeight_[i * D + D - 1] * velS_[i * D + D - 1]);
+            q += w * nodes_.porosity[i] * (nodes_.velL[i * D + D - 1] - nodes_.fedWeight[i * D + D - 1] * nodes_.velS[i * D + D - 1]);
             weight += w;
         });
         s.baseFlux[k] = q / weight * grid_.cellVolume(c) / grid_.h();
@@ -223,7 +223,7 @@ SandCells DoublePointSolver<D>::sandCells() const {
     // the sand's top per column: where a stripe heaves against its neighbours, or a boil rises
     s.surface.assign(columns, std::nan(""));
     for (Index k = 0; k < columns; ++k) {
-        const ColumnSurface top = sandSurfaceOfColumn(grid_, solid_, solidCellStart_, k, config_.points.solidPerCell);
+        const ColumnSurface top = sandSurfaceOfColumn(grid_, solid_, cells_.solidStart, k, config_.points.solidPerCell);
         if (top.row >= 0) s.surface[k] = top.top;
     }
     return s;

@@ -63,16 +63,10 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.frontDiffusivity = frontDiffusivity(config, m, h);
         materials_.push_back(s);
     }
-    // dt = C h / c_fast: with implicit drag the fastest explicit wave is the zero-drag fast wave.
-    dt_ = config.time.courant * h / waveSpeed_;
-    if (config.time.dt) {
-        const Real stable = 0.5 * h / waveSpeed_;
-        QS_CHECK(*config.time.dt <= stable,
-                 config.caseDirectory << "/case.toml: key 'time.dt': " << *config.time.dt
-                                      << " s exceeds the stable step 0.5 h / c_fast = " << stable
-                                      << " s (c_fast = " << waveSpeed_ << " m/s)");
-        dt_ = *config.time.dt;
-    }
+    // dt = C h / c_fast: with implicit drag the fastest explicit wave is the zero-drag fast wave
+    // (solver/RunSize.hpp, the same step `quicksand check` reports)
+    requireStableTimeStep(config);
+    dt_ = timeStep(config);
 
     for (const auto& m : materials_) solid_.internalCount = std::max(solid_.internalCount, m.model->stateCount());
     buildColumn(config, grid_, materials_, solid_, liquid_);
@@ -104,26 +98,12 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
 template <int D>
 void DoublePointSolver<D>::allocate() {
     const Index nn = grid_.numNodes(), nc = grid_.numCells();
-    for (auto* a : {&massS_, &massL_, &solidVolume_, &nodeVolume_, &porosity_, &sandPorosity_, &dragA_, &dragB_,
-                    &drag_, &relSpeed_, &slopeMass_})
-        a->assign(nn, 0.0);
-    diffusionNode_.assign(nn, 0);
-    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_, &velS_, &velL_, &velLIncrement_, &fedWeight_})
-        a->assign(nn * D, 0.0);
-    solidCellStart_.assign(nc + 1, 0);
-    liquidCellStart_.assign(nc + 1, 0);
-    counts_.assign(nc + 1, 0);
-    cellActive_.assign(nc, 0);
-    cellSubmerged_.assign(nc, 0);
-    cellOpenToAir_.assign(nc, 0);
-    cellFluidised_.assign(nc, 0);
-    cellStressFree_.assign(nc, 0);
-    cellSandSurface_.assign(nc, 0);
-    cellDiffusivity_.assign(nc, 0.0);
-    for (auto* a : {&cellLiquidVolume_, &cellFill_, &cellPressure_, &cellWeight_, &cellPorosity_, &cellSandPorosity_,
-                    &cellCavity_})
-        a->assign(nc, 0.0);
-    cellPressureGradient_.assign(nc * D, 0.0);
+    nodes_.resize(nn);
+    sums_.resize(nn);
+    cells_.resize(nc);
+    filling_.resize(nc);
+    water_.resize(nc);
+    sand_.resize(nc);
 
     // Liquid points come and go: reserve for the densest filling the run can reach.
     const std::size_t liquidCapacity = static_cast<std::size_t>(
@@ -184,7 +164,7 @@ void DoublePointSolver<D>::runGravityStage() {
     std::fill(solid_.v.begin(), solid_.v.end(), 0.0);
     std::fill(solid_.velocityGradient.begin(), solid_.velocityGradient.end(), 0.0);  // APIC's C: at rest too
     std::fill(liquid_.v.begin(), liquid_.v.end(), 0.0);
-    std::fill(relSpeed_.begin(), relSpeed_.end(), 0.0);
+    std::fill(nodes_.relSpeed.begin(), nodes_.relSpeed.end(), 0.0);
     cumulativeInflow_ = outflowVolume_ = solidOutflowMass_ = 0;
     chamber_.setInjectedVolume(0);
     initialLiquidMass_ = 0;

@@ -42,6 +42,7 @@
 #include "physics/SuspensionViscosity.hpp"
 #include "points/LiquidPoints.hpp"
 #include "points/SolidPoints.hpp"
+#include "solver/GridFields.hpp"
 #include "reservoir/ReservoirModel.hpp"
 
 namespace qs {
@@ -176,36 +177,23 @@ private:
     LiquidPoints<D> liquid_;
     ReorderScratch scratch_;
 
-    // cells
-    std::vector<Index> solidCellStart_, liquidCellStart_, counts_;
-    std::vector<char> cellActive_, cellSubmerged_, cellFluidised_, cellStressFree_, cellSandSurface_;
-    /// the water's surface (no sand in or above the cell, the cell above under a quarter wet) or a
-    /// sand-free cell of the overflow's row: its water is under the air (classifyCells in PointsToGrid.cpp)
-    std::vector<char> cellOpenToAir_;
+    // the grid's fields, grouped by what they describe (solver/GridFields.hpp)
+    NodeFields<D> nodes_;
+    TransferSums sums_;
+    CellIndex cells_;
+    CellFilling filling_;
+    CellWater<D> water_;
+    CellSandState sand_;
     /// Pa, the lowest pressure a cell's water takes: no suction where it is open to the air
     Real cellLimit(Index c) const {
         const Real pMin = config_.liquid.cavitationPressure;
-        return cellOpenToAir_[c] ? std::max(pMin, Real(0)) : pMin;
+        return filling_.openToAir[c] ? std::max(pMin, Real(0)) : pMin;
     }
-    std::vector<Real> cellDiffusivity_;
-    std::vector<Real> cellLiquidVolume_, cellFill_, cellPressure_, cellWeight_, cellPorosity_, cellSandPorosity_,
-        cellPressureGradient_, cellCavity_;
-
-    // nodes (vectors are [node][axis])
-    std::vector<Real> massS_, massL_, momS_, momL_, forceS_, forceL_, velS_, velL_,
-        velLIncrement_, solidVolume_, nodeVolume_, porosity_, sandPorosity_, dragA_, dragB_, drag_, relSpeed_;
-    /// kg, sum over the solid points reaching a node of m_p (h |grad N_ip|)^2: the points' mass
-    /// weighted by the slopes of their hats there, the yardstick of a starved node (GridToPoints.cpp)
-    std::vector<Real> slopeMass_;
-    /// -, [node][axis]: fedWeight of the node, 1 for a held component (this step's, GridToPoints.cpp)
-    std::vector<Real> fedWeight_;
     /// How far a node is fed with sand: m_i / (share S_i) for a starved node, else 1 (GridToPoints.cpp)
     Real fedWeight(Index i, Real share) const {
-        const Real need = share * slopeMass_[i];
-        return massS_[i] < need ? massS_[i] / need : Real(1);
+        const Real need = share * nodes_.slopeMass[i];
+        return nodes_.massS[i] < need ? nodes_.massS[i] / need : Real(1);
     }
-    std::vector<char> diffusionNode_;  ///< nodes where the front diffusion acts
-    bool anyDiffusion_ = false;        ///< whether any node is one
     BoundaryMasks<D> masks_;
     InflowChamber<D> chamber_;
     std::vector<char> dropFlags_;    ///< scratch of the outflow removal

@@ -22,17 +22,17 @@ template <int D>
 void DoublePointSolver<D>::diffuseFronts() {
     const Index rowStride = grid_.nodeStride(D - 1), lastRow = grid_.nodes(D - 1) - 1;
     forAll(grid_.numNodes(), [&](Index i) {
-        bool inside = massS_[i] > 0 && !masks_.solidFixed[i * D + D - 1];
+        bool inside = nodes_.massS[i] > 0 && !masks_.solidFixed[i * D + D - 1];
         const Index row = i / rowStride;
         if (row == 0 || row == lastRow) inside = false;
         grid_.forEachCellOfNode(i, [&](Index c, int) {
-            if (solidCellStart_[c + 1] == solidCellStart_[c] || !cellStressFree_[c] || cellSandSurface_[c])
+            if (!cells_.hasSolid(c) || !sand_.stressFree[c] || sand_.surface[c])
                 inside = false;
         });
-        diffusionNode_[i] = inside;
+        nodes_.diffusionNode[i] = inside;
     });
     // most steps of most runs have no stress-free sand: the points then skip the diffusion's sums
-    anyDiffusion_ = anyOf(grid_.numNodes(), [&](Index i) { return diffusionNode_[i] != 0; });
+    nodes_.anyDiffusion = anyOf(grid_.numNodes(), [&](Index i) { return nodes_.diffusionNode[i] != 0; });
 }
 
 template void DoublePointSolver<1>::diffuseFronts();

@@ -40,7 +40,7 @@ void DoublePointSolver<D>::gridToPoints() {
     // has just crossed away from holds only the tail of its hat: a sliver of solid mass, N m_p. The
     // point's stress still pushes on it with the full slope 1/h, so its velocity is that force over
     // the sliver, and the point's strain took that velocity with the full slope too: the explicit
-    // update of a vanishing mass. S_i = sum_p m_p (h |grad N_ip|)^2 (slopeMass_, PointsToGrid.cpp)
+    // update of a vanishing mass. S_i = sum_p m_p (h |grad N_ip|)^2 (nodes_.slopeMass, PointsToGrid.cpp)
     // is the points' mass weighted by their slopes; C = dt c_fast / h is the step's. A node with
     // less solid mass than starvedShare S_i = (C^2 / 2) S_i is starved: its share of the velocity
     // gradient is taken with weight w_i = m_i / (starvedShare S_i), and the rest, 1 - w_i, with
@@ -65,15 +65,15 @@ void DoublePointSolver<D>::gridToPoints() {
         bool diffuses = diffusion, held[D] = {}, anyStarved = false;
         forEachNodeOfPoint<linear>(grid_, solid_, p, [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
-                const Real v = velS_[i * D + d];
+                const Real v = nodes_.velS[i * D + d];
                 vNew[d] += N * v;
                 for (int e = 0; e < D; ++e) L[d][e] += v * gradN[e];
-                anyStarved = anyStarved || fedWeight_[i * D + d] < 1;
-                if constexpr (diffusion) gradPhi[d] -= gradN[d] * sandPorosity_[i];
+                anyStarved = anyStarved || nodes_.fedWeight[i * D + d] < 1;
+                if constexpr (diffusion) gradPhi[d] -= gradN[d] * nodes_.sandPorosity[i];
             }
-            gridPorosity += N * sandPorosity_[i];
+            gridPorosity += N * nodes_.sandPorosity[i];
             if constexpr (diffusion) {
-                if (N > 0 && !diffusionNode_[i]) diffuses = false;
+                if (N > 0 && !nodes_.diffusionNode[i]) diffuses = false;
                 for (int d = 0; d < D - 1; ++d) held[d] = held[d] || (N > 0 && masks_.solidFixed[i * D + d]);
             }
         });
@@ -83,7 +83,7 @@ void DoublePointSolver<D>::gridToPoints() {
             Real starvedL[D][D] = {}, starvedSlope[D][D] = {}, fedV[D] = {}, fedN[D] = {};
             forEachNodeOfPoint<linear>(grid_, solid_, p, [&](Index i, Real N, const Real* gradN) {
                 for (int d = 0; d < D; ++d) {
-                    const Real v = velS_[i * D + d], w = fedWeight_[i * D + d];
+                    const Real v = nodes_.velS[i * D + d], w = nodes_.fedWeight[i * D + d];
                     fedV[d] += N * w * v;
                     fedN[d] += N * w;
                     for (int e = 0; e < D; ++e) {
@@ -109,7 +109,7 @@ void DoublePointSolver<D>::gridToPoints() {
             // the front diffusion moves the point; it is not part of its velocity. Next to a
             // wall it does not move it towards or away from the wall: no flux through the wall,
             // whatever the field beside it (the gradient there is one-sided)
-            const Real w = diffuses && !held[d] ? -cellDiffusivity_[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
+            const Real w = diffuses && !held[d] ? -sand_.diffusivity[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
             solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), sandLowest[d], extent[d]);
         }
         for (int d = 0; d < D; ++d)
@@ -124,7 +124,7 @@ void DoublePointSolver<D>::gridToPoints() {
         const auto& mat = materials_[solid_.material[p]];
         Real* s = &solid_.stress[p * 6];
         Real& n = solid_.porosity[p];
-        const bool fluidised = cellFluidised_[cell];
+        const bool fluidised = sand_.fluidised[cell];
         const bool resettling = !fluidised && solid_.state[p] == kFluidisedState;
         if (resettling) {
             // a skeleton again, restarting from zero effective stress (no viscous stress left)
@@ -132,7 +132,7 @@ void DoublePointSolver<D>::gridToPoints() {
             for (int k = 0; k < 6; ++k) s[k] = 0;
         }
         // the sand's porosity where the point is, from the grid (at the sand's top, the cell's)
-        if (cellSandSurface_[cell]) gridPorosity = cellSandPorosity_[cell];
+        if (sand_.surface[cell]) gridPorosity = sand_.porosity[cell];
         gridPorosity = std::clamp(gridPorosity, Real(1e-3), Real(0.99));
         // looser than the loosest packing the grains form no skeleton (no effective stress); a
         // skeleton that carries stress loses it only beyond the switch's hysteresis band, so that
@@ -173,7 +173,7 @@ void DoublePointSolver<D>::gridToPoints() {
     };
     const Index solidCount = static_cast<Index>(solid_.size());
     withStencilKind(!gimp, [&](auto linearShapes) {
-        if (anyDiffusion_) forAll(solidCount, [&](Index p) { solidPoint(p, std::true_type{}, linearShapes); });
+        if (nodes_.anyDiffusion) forAll(solidCount, [&](Index p) { solidPoint(p, std::true_type{}, linearShapes); });
         else forAll(solidCount, [&](Index p) { solidPoint(p, std::false_type{}, linearShapes); });
     });
 
@@ -186,20 +186,20 @@ void DoublePointSolver<D>::gridToPoints() {
         bool diffuses = diffusion, held[D] = {};
         forEachNodeOfPoint<linear>(grid_, liquid_, p, [&](Index i, Real N, const Real* gradN) {
             for (int d = 0; d < D; ++d) {
-                const Real v = velL_[i * D + d];
-                dv[d] += N * velLIncrement_[i * D + d];
+                const Real v = nodes_.velL[i * D + d];
+                dv[d] += N * nodes_.velLIncrement[i * D + d];
                 vNew[d] += N * v;
                 div += v * gradN[d];
-                if constexpr (diffusion) gradPhi[d] -= gradN[d] * sandPorosity_[i];
+                if constexpr (diffusion) gradPhi[d] -= gradN[d] * nodes_.sandPorosity[i];
             }
             if constexpr (diffusion) {
-                sand += N * sandPorosity_[i];
-                mixture += N * porosity_[i];
-                if (N > 0 && !diffusionNode_[i]) diffuses = false;
+                sand += N * nodes_.sandPorosity[i];
+                mixture += N * nodes_.porosity[i];
+                if (N > 0 && !nodes_.diffusionNode[i]) diffuses = false;
                 for (int d = 0; d < D - 1; ++d) held[d] = held[d] || (N > 0 && masks_.liquidFixed[i * D + d]);
             }
         });
-        const Real k = diffuses ? cellDiffusivity_[liquid_.shape.cell[p]] / std::max(Real(1e-3), 1 - sand) : 0;
+        const Real k = diffuses ? sand_.diffusivity[liquid_.shape.cell[p]] / std::max(Real(1e-3), 1 - sand) : 0;
         if (axisymmetric) div += vNew[0] / liquid_.x[p * D];  // the hoop strain rate v_r / r
         for (int d = 0; d < D; ++d) {
             liquid_.v[p * D + d] += dv[d];  // FLIP
@@ -215,7 +215,7 @@ void DoublePointSolver<D>::gridToPoints() {
     };
     const Index liquidCount = static_cast<Index>(liquid_.size());
     withStencilKind(!gimp, [&](auto linearShapes) {
-        if (anyDiffusion_) forAll(liquidCount, [&](Index p) { liquidPoint(p, std::true_type{}, linearShapes); });
+        if (nodes_.anyDiffusion) forAll(liquidCount, [&](Index p) { liquidPoint(p, std::true_type{}, linearShapes); });
         else forAll(liquidCount, [&](Index p) { liquidPoint(p, std::false_type{}, linearShapes); });
     });
 }
@@ -231,26 +231,26 @@ void DoublePointSolver<D>::updatePressure() {
     // K_L is a numerical stiffness: this is artificial compressibility, taken at a fixed place.
     const Real KL = config_.liquid.bulkModulus, dt = dt_;
     const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
-    forAllCells(grid_.numCells(), liquidCellStart_, [&](Index c) {
-        if (liquidCellStart_[c + 1] == liquidCellStart_[c]) return;
+    forAllCells(grid_.numCells(), cells_.liquidStart, [&](Index c) {
+        if (!cells_.hasLiquid(c)) return;
         Real div = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
-            const Real ni = porosity_[i];
+            const Real ni = nodes_.porosity[i];
             for (int a = 0; a < D; ++a) {
                 const Real gN = grid_.divergenceWeight(c, corner, a);  // with the hoop part in axisymmetry
-                div += gN * ((1 - ni) * velS_[i * D + a] + ni * velL_[i * D + a]);
+                div += gN * ((1 - ni) * nodes_.velS[i * D + a] + ni * nodes_.velL[i * D + a]);
             }
         });
         // the water's top cells are open to the air (classifyCells): they take no suction, and
         // what they expand is their surface rising, not a cavity, so none is kept. Kept there,
         // the top row's water at p ~ 0 gathered cavities from every ripple and the gate's flux
         // strayed 1.9 % from the filter's in the side-by-side gravels
-        const bool openToAir = cellOpenToAir_[c];
+        const bool openToAir = filling_.openToAir[c];
         // the cell's water (computeForces) pressed by the mixture's strain, which is the water's
         // over n_c: beyond the limit a cavity opens, which a compression closes before it
         // presses the water (physics/Cavitation.hpp)
         const CavitatingWater water =
-            pressWater({cellPressure_[c], cellCavity_[c]}, -KL / cellPorosity_[c] * dt * div, KL, cellLimit(c));
+            pressWater({water_.pressure[c], water_.cavity[c]}, -KL / water_.porosity[c] * dt * div, KL, cellLimit(c));
         // Each point takes the cell's field where it now is, p_c + grad p_c . (x - x_c): the field
         // the liquid moves through, so that a point entering the next cell brings that cell's
         // pressure instead of kicking its mean by a cell's drop. Points carried their own
@@ -262,11 +262,11 @@ void DoublePointSolver<D>::updatePressure() {
         Real centre[D];
         const IVec<D> cc = grid_.cellCoords(c);
         for (int a = 0; a < D; ++a) centre[a] = grid_.cellCentre(cc[a]);
-        const Real* grad = &cellPressureGradient_[c * D];
+        const Real* grad = &water_.pressureGradient[c * D];
         // The cavity the points keep decides how the next step reads them back (computeForces):
         // with none, along the gradient; so the gradient goes on exactly where none is kept.
         const Real cavity = openToAir ? 0 : water.cavity;
-        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+        for (Index p = cells_.liquidStart[c]; p < cells_.liquidStart[c + 1]; ++p) {
             Real pressure = water.pressure;
             if (cavity == 0)
                 for (int a = 0; a < D; ++a) pressure += grad[a] * (liquid_.x[p * D + a] - centre[a]);

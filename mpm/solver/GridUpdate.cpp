@@ -24,15 +24,15 @@ void DoublePointSolver<D>::computePressureGradient() {
         const IVec<D> cc = grid_.cellCoords(c);
         for (int a = 0; a < D; ++a) {
             Real slope = 0;
-            if (cellWeight_[c] > 0) {
+            if (water_.weight[c] > 0) {
                 const Index stride = grid_.cellStride(a);
-                const bool lo = cc[a] > 0 && cellWeight_[c - stride] > 0;
-                const bool hi = cc[a] + 1 < grid_.cells(a) && cellWeight_[c + stride] > 0;
-                if (lo && hi) slope = (cellPressure_[c + stride] - cellPressure_[c - stride]) / (2 * grid_.h());
-                else if (hi) slope = (cellPressure_[c + stride] - cellPressure_[c]) / grid_.h();
-                else if (lo) slope = (cellPressure_[c] - cellPressure_[c - stride]) / grid_.h();
+                const bool lo = cc[a] > 0 && water_.weight[c - stride] > 0;
+                const bool hi = cc[a] + 1 < grid_.cells(a) && water_.weight[c + stride] > 0;
+                if (lo && hi) slope = (water_.pressure[c + stride] - water_.pressure[c - stride]) / (2 * grid_.h());
+                else if (hi) slope = (water_.pressure[c + stride] - water_.pressure[c]) / grid_.h();
+                else if (lo) slope = (water_.pressure[c] - water_.pressure[c - stride]) / grid_.h();
             }
-            cellPressureGradient_[c * D + a] = slope;
+            water_.pressureGradient[c * D + a] = slope;
         }
     });
 }
@@ -60,12 +60,12 @@ void DoublePointSolver<D>::computeForces() {
     // taken from this step's plain means instead, the correction extrapolated at the drained top
     // of Terzaghi's column and blew up.
     const Real KL = config_.liquid.bulkModulus;
-    forAllCells(nc, liquidCellStart_, [&](Index c) {
+    forAllCells(nc, cells_.liquidStart, [&](Index c) {
         Real strain = 0, water = 0, w = 0, centre[D];
         const IVec<D> cc = grid_.cellCoords(c);
         for (int a = 0; a < D; ++a) centre[a] = grid_.cellCentre(cc[a]);
-        const Real* grad = &cellPressureGradient_[c * D];
-        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+        const Real* grad = &water_.pressureGradient[c * D];
+        for (Index p = cells_.liquidStart[c]; p < cells_.liquidStart[c + 1]; ++p) {
             Real atCentre = liquid_.pressure[p];
             if (liquid_.cavity[p] == 0)  // a cavity's water is at the limit throughout its cell
                 for (int a = 0; a < D; ++a) atCentre -= grad[a] * (liquid_.x[p * D + a] - centre[a]);
@@ -74,12 +74,12 @@ void DoublePointSolver<D>::computeForces() {
             w += liquid_.weight[p];
         }
         const CavitatingWater state = waterAtStrain(water > 0 ? strain / water : 0.0, KL, cellLimit(c));
-        cellWeight_[c] = w;
-        cellPressure_[c] = w > 0 ? state.pressure : 0.0;
-        cellCavity_[c] = w > 0 ? state.cavity : 0.0;
+        water_.weight[c] = w;
+        water_.pressure[c] = w > 0 ? state.pressure : 0.0;
+        water_.cavity[c] = w > 0 ? state.cavity : 0.0;
         Real n = 0;
-        grid_.forEachNodeOfCell(c, [&](Index i, int) { n += porosity_[i] / (1 << D); });
-        cellPorosity_[c] = n;
+        grid_.forEachNodeOfCell(c, [&](Index i, int) { n += nodes_.porosity[i] / (1 << D); });
+        water_.porosity[c] = n;
     });
     computePressureGradient();
 
@@ -97,9 +97,9 @@ void DoublePointSolver<D>::computeForces() {
     // and so its transpose a radial force; a uniform pressure then pushes no node sideways)
     forAll(grid_.numNodes(), [&](Index i) {
         Real fL[D] = {}, fS[D] = {};
-        const Real ni = porosity_[i];
+        const Real ni = nodes_.porosity[i];
         grid_.forEachCellOfNode(i, [&](Index cell, int corner) {
-            const Real pV = cellPressure_[cell] * cellWeight_[cell];
+            const Real pV = water_.pressure[cell] * water_.weight[cell];
             if (pV == 0) return;
             for (int a = 0; a < D; ++a) {
                 const Real gN = grid_.divergenceWeight(cell, corner, a);
@@ -108,11 +108,11 @@ void DoublePointSolver<D>::computeForces() {
             }
         });
         for (int a = 0; a < D; ++a) {
-            forceL_[i * D + a] += fL[a];
-            forceS_[i * D + a] += fS[a];
+            nodes_.forceL[i * D + a] += fL[a];
+            nodes_.forceS[i * D + a] += fS[a];
         }
-        forceS_[i * D + D - 1] -= massS_[i] * g;
-        forceL_[i * D + D - 1] -= massL_[i] * g;
+        nodes_.forceS[i * D + D - 1] -= nodes_.massS[i] * g;
+        nodes_.forceL[i * D + D - 1] -= nodes_.massL[i] * g;
     });
 
     // Gate: the reservoir's pressure acts on the chamber's liquid at the gate plane, less the
@@ -120,7 +120,7 @@ void DoublePointSolver<D>::computeForces() {
     if (config_.gate.mode == GateMode::Pressure) {
         for (Index i : masks_.gateNodes) {
             const Real p = gateLaw_.staticPressure - rhoL * g * chamber_.gapAtNode(grid_, i);
-            forceL_[i * D + D - 1] += p * nodeFootprint(grid_, i);
+            nodes_.forceL[i * D + D - 1] += p * nodeFootprint(grid_, i);
         }
     }
 
@@ -130,7 +130,7 @@ void DoublePointSolver<D>::computeForces() {
     // the natural zero-traction condition holds at a free surface.
     const Real q = surchargeNow();
     if (q != 0)
-        addSurcharge(grid_, solid_, solidCellStart_, config_.points.solidPerCell, q, forceS_);
+        addSurcharge(grid_, solid_, cells_.solidStart, config_.points.solidPerCell, q, nodes_.forceS);
 }
 
 // ---------------------------------------------------------------------------------------------
@@ -150,16 +150,16 @@ void DoublePointSolver<D>::solveNodes() {
     const bool uniformGate = D > 1 && config_.gate.mode == GateMode::Pressure;
 
     forAll(grid_.numNodes(), [&](Index i) {
-        const Real mS = massS_[i], mL = massL_[i], Q = drag_[i];
+        const Real mS = nodes_.massS[i], mL = nodes_.massL[i], Q = nodes_.drag[i];
         const bool isGate = i < rowStride;  // bottom node row
         // implicit tube loss at the gate: M_L v = M_L v* - dt c v, c = R A_total A_i
         const Real c = isGate ? gateResistance * area * nodeFootprint(grid_, i) : 0.0;
         Real w2 = 0;
         for (int d = 0; d < D; ++d) {
             const Index k = i * D + d;
-            Real vS0 = mS > 0 ? momS_[k] / mS : 0.0;
-            Real vL0 = mL > 0 ? momL_[k] / mL : 0.0;
-            Real fS = forceS_[k], fL = forceL_[k];
+            Real vS0 = mS > 0 ? nodes_.momS[k] / mS : 0.0;
+            Real vL0 = mL > 0 ? nodes_.momL[k] / mL : 0.0;
+            Real fS = nodes_.forceS[k], fL = nodes_.forceL[k];
             if (damping_) {
                 // local damping, gravity stage only: F <- F - alpha |F| sign(v)
                 fS -= dampingAlpha_ * std::abs(fS) * (vS0 > 0 ? 1 : (vS0 < 0 ? -1 : 0));
@@ -196,12 +196,12 @@ void DoublePointSolver<D>::solveNodes() {
             } else if (mS > 0) {
                 vS = masks_.solidFixed[k] ? 0.0 : vS1;
             }
-            velS_[k] = vS;
-            velL_[k] = vL;
-            velLIncrement_[k] = vL - vL0;  // what the FLIP update hands the liquid points
+            nodes_.velS[k] = vS;
+            nodes_.velL[k] = vL;
+            nodes_.velLIncrement[k] = vL - vL0;  // what the FLIP update hands the liquid points
             w2 += (vL - vS) * (vL - vS);
         }
-        relSpeed_[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
+        nodes_.relSpeed[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
     });
 
     if (uniformGate) uniformGateVelocity(gateResistance);
@@ -209,7 +209,7 @@ void DoublePointSolver<D>::solveNodes() {
     // Gate flux through the gate plane (free water: q = v_L).
     Real Qg = 0;
     for (Index i : masks_.gateNodes)
-        if (massL_[i] > 0) Qg += velL_[i * D + D - 1] * nodeFootprint(grid_, i);
+        if (nodes_.massL[i] > 0) Qg += nodes_.velL[i * D + D - 1] * nodeFootprint(grid_, i);
     gateFlux_ = Qg;
 }
 
@@ -227,17 +227,17 @@ void DoublePointSolver<D>::uniformGateVelocity(Real resistance) {
     // the wet part of the gate carries the flux, Q = v A_wet, and the tube loss R Q on it
     Real momentum = 0, mass = 0, wet = 0;
     for (Index i : masks_.gateNodes) {
-        if (massL_[i] <= 0) continue;
-        momentum += massL_[i] * velL_[i * D + D - 1];  // the drag-free predictor (no solid here)
-        mass += massL_[i];
+        if (nodes_.massL[i] <= 0) continue;
+        momentum += nodes_.massL[i] * nodes_.velL[i * D + D - 1];  // the drag-free predictor (no solid here)
+        mass += nodes_.massL[i];
         wet += nodeFootprint(grid_, i);
     }
     const Real v = mass > 0 ? momentum / (mass + dt_ * resistance * wet * wet) : 0.0;
     for (Index i : masks_.gateNodes)
-        if (massL_[i] > 0) {
+        if (nodes_.massL[i] > 0) {
             const Index k = i * D + D - 1;
-            velL_[k] = v;
-            velLIncrement_[k] = v - momL_[k] / massL_[i];  // from the velocity before the step, as solveNodes
+            nodes_.velL[k] = v;
+            nodes_.velLIncrement[k] = v - nodes_.momL[k] / nodes_.massL[i];  // from the velocity before the step, as solveNodes
         }
 }
 

@@ -12,11 +12,11 @@ namespace qs {
 
 template <int D>
 void DoublePointSolver<D>::switchLiquidState() {
-    forAllCells(grid_.numCells(), solidCellStart_, [&](Index c) {
-        const Index first = solidCellStart_[c], last = solidCellStart_[c + 1];
+    forAllCells(grid_.numCells(), cells_.solidStart, [&](Index c) {
+        const Index first = cells_.solidStart[c], last = cells_.solidStart[c + 1];
         if (first == last) {
-            cellFluidised_[c] = 0;
-            cellStressFree_[c] = 0;
+            sand_.fluidised[c] = 0;
+            sand_.stressFree[c] = 0;
             return;
         }
         // the cell's previous state is that of most of its solid mass; n_max the mass-weighted
@@ -32,35 +32,35 @@ void DoublePointSolver<D>::switchLiquidState() {
             else if (!isStressFree(&solid_.stress[p * 6])) stressFree = false;
         }
         nMax /= mass;
-        cellDiffusivity_[c] = diffusivity / mass;
+        sand_.diffusivity[c] = diffusivity / mass;
         // div v_S at the cell centre from this step's nodal velocities (extension positive). A
         // starved node (GridToPoints.cpp) counts with its fed weight w_i and, for the rest, the
         // cell's mass-weighted solid velocity: its own is a force over a sliver of mass
         Real cellMomentum[D] = {}, cellMass = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int) {
-            cellMass += massS_[i];
-            for (int a = 0; a < D; ++a) cellMomentum[a] += massS_[i] * velS_[i * D + a];
+            cellMass += nodes_.massS[i];
+            for (int a = 0; a < D; ++a) cellMomentum[a] += nodes_.massS[i] * nodes_.velS[i * D + a];
         });
         Real divergence = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             for (int a = 0; a < D; ++a) {
-                const Real wa = fedWeight_[i * D + a];
-                const Real v = cellMass > 0 ? wa * velS_[i * D + a] + (1 - wa) * cellMomentum[a] / cellMass : velS_[i * D + a];
+                const Real wa = nodes_.fedWeight[i * D + a];
+                const Real v = cellMass > 0 ? wa * nodes_.velS[i * D + a] + (1 - wa) * cellMomentum[a] / cellMass : nodes_.velS[i * D + a];
                 divergence += grid_.divergenceWeight(c, corner, a) * v;
             }
         });
         // the cell's porosity decides when it turns fluidised; its densest node when it resettles:
         // a sediment grows into the cell from one side, and the rest of the cell, still looser
         // than n_max, then settles onto it without a skeleton (GridToPoints.cpp)
-        const Real n = cellSandPorosity_[c];
+        const Real n = sand_.porosity[c];
         Real densest = 1;
-        grid_.forEachNodeOfCell(c, [&](Index i, int) { densest = std::min(densest, sandPorosity_[i]); });
-        if (cellSandSurface_[c]) densest = n;
+        grid_.forEachNodeOfCell(c, [&](Index i, int) { densest = std::min(densest, nodes_.sandPorosity[i]); });
+        if (sand_.surface[c]) densest = n;
         const bool wasFluidised = 2 * fluidMass > mass;
-        cellFluidised_[c] = wasFluidised ? !stateRule_.turnsSolid(densest, nMax, divergence)
+        sand_.fluidised[c] = wasFluidised ? !stateRule_.turnsSolid(densest, nMax, divergence)
                                          : stateRule_.turnsFluidised(stressFree, n, nMax, divergence);
         // the sand here carries no effective stress: fronts diffuse (FrontDiffusion.cpp)
-        cellStressFree_[c] = cellFluidised_[c] || (stressFree && fluidMass == 0);
+        sand_.stressFree[c] = sand_.fluidised[c] || (stressFree && fluidMass == 0);
     });
 }
 

@@ -90,8 +90,8 @@ void DoublePointSolver<D>::computeWeights(Set& set) {
 
 template <int D>
 void DoublePointSolver<D>::sortPoints() {
-    sortByCell(solid_, solidCellStart_, counts_);
-    sortByCell(liquid_, liquidCellStart_, counts_);
+    sortByCell(solid_, cells_.solidStart, cells_.counts);
+    sortByCell(liquid_, cells_.liquidStart, cells_.counts);
     computeWeights(solid_);
     computeWeights(liquid_);
 }
@@ -99,15 +99,14 @@ void DoublePointSolver<D>::sortPoints() {
 template <int D>
 void DoublePointSolver<D>::classifyCells() {
     const Index nc = grid_.numCells();
-    forAllCells(nc, liquidCellStart_, [&](Index c) {
+    forAllCells(nc, cells_.liquidStart, [&](Index c) {
         Real vol = 0;
-        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) vol += liquid_.volume[p];
-        cellLiquidVolume_[c] = vol;
+        for (Index p = cells_.liquidStart[c]; p < cells_.liquidStart[c + 1]; ++p) vol += liquid_.volume[p];
+        filling_.liquidVolume[c] = vol;
         // the wet share of the cell: a liquid point stands for a mixture volume (its water is
         // n rho_L V), so the points of a saturated cell add up to the cell's volume, sand or not
-        cellFill_[c] = std::min(Real(1), vol / grid_.cellVolume(c));
-        cellActive_[c] = (liquidCellStart_[c + 1] > liquidCellStart_[c]) ||
-                         (solidCellStart_[c + 1] > solidCellStart_[c]);
+        filling_.fill[c] = std::min(Real(1), vol / grid_.cellVolume(c));
+        filling_.active[c] = cells_.hasLiquid(c) || cells_.hasSolid(c);
     });
     // A cell is below the free surface when the cell above is a quarter wet or more
     // (kSubmergingFill), or when it is a cell of the top row below the overflow
@@ -125,16 +124,16 @@ void DoublePointSolver<D>::classifyCells() {
     const Index up = grid_.cellStride(D - 1);
     const Index rows = grid_.cells(D - 1);
     liquid_.weight.resize(liquid_.size());
-    forAllCells(nc, liquidCellStart_, [&](Index c) {
+    forAllCells(nc, cells_.liquidStart, [&](Index c) {
         const Index row = (c / up) % rows;
-        const bool holdsLiquid = liquidCellStart_[c + 1] > liquidCellStart_[c];
-        const bool above = (row + 1 < rows && cellFill_[c + up] >= kSubmergingFill) ||
+        const bool holdsLiquid = cells_.hasLiquid(c);
+        const bool above = (row + 1 < rows && filling_.fill[c + up] >= kSubmergingFill) ||
                            (row + 1 == overflowRow_ && holdsLiquid);
-        cellSubmerged_[c] = above;
+        filling_.submerged[c] = above;
         const Real volume = grid_.cellVolume(c);
-        const Real scale = above && cellLiquidVolume_[c] > 0 ? volume / cellLiquidVolume_[c] : 1.0;
-        const bool thin = cellFill_[c] < config_.liquid.freeSurfaceFilling;
-        for (Index p = liquidCellStart_[c]; p < liquidCellStart_[c + 1]; ++p) {
+        const Real scale = above && filling_.liquidVolume[c] > 0 ? volume / filling_.liquidVolume[c] : 1.0;
+        const bool thin = filling_.fill[c] < config_.liquid.freeSurfaceFilling;
+        for (Index p = cells_.liquidStart[c]; p < cells_.liquidStart[c + 1]; ++p) {
             liquid_.weight[p] = liquid_.volume[p] * scale;
             liquid_.state[p] = (!above && thin) ? kFreeSurfaceLiquid : kSubmergedLiquid;
         }
@@ -152,10 +151,10 @@ void DoublePointSolver<D>::classifyCells() {
         bool sandAbove = false;
         for (Index row = rows; row-- > 0;) {
             const Index c = column + row * up;
-            const bool holdsSand = solidCellStart_[c + 1] > solidCellStart_[c];
+            const bool holdsSand = cells_.hasSolid(c);
             const bool overflowRow = row + 1 == overflowRow_;
             sandAbove = sandAbove || holdsSand;
-            cellOpenToAir_[c] = !sandAbove && (overflowRow || !cellSubmerged_[c]);
+            filling_.openToAir[c] = !sandAbove && (overflowRow || !filling_.submerged[c]);
         }
     });
     // The overflow's top cells count as full only while the water stands there: fallen a cell
@@ -179,7 +178,7 @@ void DoublePointSolver<D>::classifyCells() {
         // into them (the weir holds crest water there, straddling the rim)
         const Index from = lowRow >= 1 ? (lowRow - 1) * up : first;
         const Index to = std::min(last + up, nc);
-        const Real water = waterBetween(grid_, liquid_, liquidCellStart_[from], liquidCellStart_[to],
+        const Real water = waterBetween(grid_, liquid_, cells_.liquidStart[from], cells_.liquidStart[to],
                                         lowRow * grid_.h(), overflowRow_ * grid_.h(), config_.points.liquidPerCell);
         const Real rowsMeasured = static_cast<Real>(overflowRow_ - lowRow);
         const Real missing = std::max(Real(0), room - water) / room * rowsMeasured;  // in rows
@@ -205,10 +204,10 @@ template <int D>
 Real DoublePointSolver<D>::waterVolumeAt(Index node) const {
     Real volume = 0;
     grid_.forEachCellOfNode(node, [&](Index cell, int corner) {
-        if (!cellActive_[cell]) return;
+        if (!filling_.active[cell]) return;
         if (overflowRow_ >= 0 && grid_.cellCoords(cell)[D - 1] >= overflowRow_) return;
-        const bool full = cellSubmerged_[cell] && liquidCellStart_[cell + 1] > liquidCellStart_[cell];
-        const Real f = full ? 1 : cellFill_[cell];  // below the free surface the pores are full
+        const bool full = filling_.submerged[cell] && cells_.hasLiquid(cell);
+        const Real f = full ? 1 : filling_.fill[cell];  // below the free surface the pores are full
         const bool top = (corner >> (D - 1)) & 1;
         volume += grid_.cellShare(cell, corner) * (top ? f * f : f * (2 - f));
     });
@@ -217,9 +216,9 @@ Real DoublePointSolver<D>::waterVolumeAt(Index node) const {
 
 template <int D>
 void DoublePointSolver<D>::pointsToGrid() {
-    for (auto* a : {&massS_, &massL_, &solidVolume_, &dragA_, &dragB_, &slopeMass_})
+    for (auto* a : {&nodes_.massS, &nodes_.massL, &sums_.grainVolume, &sums_.darcy, &sums_.forchheimer, &nodes_.slopeMass})
         std::fill(a->begin(), a->end(), 0.0);
-    for (auto* a : {&momS_, &momL_, &forceS_, &forceL_}) std::fill(a->begin(), a->end(), 0.0);
+    for (auto* a : {&nodes_.momS, &nodes_.momL, &nodes_.forceS, &nodes_.forceL}) std::fill(a->begin(), a->end(), 0.0);
 
     // Solid: mass, momentum, grain volume, drag sums and the effective-stress force
     // F_int,S = sum grad(N)^T sigma' V (subtracted).
@@ -262,15 +261,15 @@ void DoublePointSolver<D>::pointsToGrid() {
         // velocity at node k, v_p + C_p (x_k - x_p) with x_k - x_p = (k_e - xi_e) h, is the
         // velocity at the cell's lowest node plus C_p h for each axis along which k is the upper node.
         const Real h = grid_.h();
-        forEachPointColoured(grid_, solidCellStart_, slabRows(true), [&](Index p) {
+        forEachPointColoured(grid_, cells_.solidStart, slabRows(true), [&](Index p) {
             // the node arrays as locals: the compiler keeps them in registers across the nodes
-            Real* const mass = massS_.data();
-            Real* const grains = solidVolume_.data();
-            Real* const dragA = dragA_.data();
-            Real* const dragB = dragB_.data();
-            Real* const mom = momS_.data();
-            Real* const force = forceS_.data();
-            Real* const slopeMass = slopeMass_.data();
+            Real* const mass = nodes_.massS.data();
+            Real* const grains = sums_.grainVolume.data();
+            Real* const dragA = sums_.darcy.data();
+            Real* const dragB = sums_.forchheimer.data();
+            Real* const mom = nodes_.momS.data();
+            Real* const force = nodes_.forceS.data();
+            Real* const slopeMass = nodes_.slopeMass.data();
             const LinearStencil<D> st = linearStencil(grid_, &solid_.x[p * D]);
             const SolidShares t = sharesOf(p);
             const Real* C = &solid_.velocityGradient[p * D * D];
@@ -326,7 +325,7 @@ void DoublePointSolver<D>::pointsToGrid() {
         });
     } else {
         // uGIMP: the cached per-axis weights (computeWeights), up to 3 nodes per axis
-        forEachPointColoured(grid_, solidCellStart_, slabRows(false), [&](Index p) {
+        forEachPointColoured(grid_, cells_.solidStart, slabRows(false), [&](Index p) {
             const SolidShares t = sharesOf(p);
             Real v[D], C[D * D];
             for (int d = 0; d < D; ++d) v[d] = solid_.v[p * D + d];
@@ -349,31 +348,31 @@ void DoublePointSolver<D>::pointsToGrid() {
             forStencilOffsets<D>(grid_, solid_.shape.start[p], &solid_.shape.w[p * D * 3],
                                  &solid_.shape.dw[p * D * 3], [&](Index i, Real N, const Real* gradN, const int* offset) {
                 if (i < firstSolidNode) return;
-                massS_[i] += N * t.m;
-                solidVolume_[i] += N * t.grains;
-                dragA_[i] += N * t.dragA;
-                dragB_[i] += N * t.dragB;
+                nodes_.massS[i] += N * t.m;
+                sums_.grainVolume[i] += N * t.grains;
+                sums_.darcy[i] += N * t.dragA;
+                sums_.forchheimer[i] += N * t.dragB;
                 Real dx[D], slope2 = 0;
                 for (int e = 0; e < D; ++e) dx[e] = grid_.nodePosition(first[e] + offset[e]) - centre[e];
                 for (int e = 0; e < D; ++e) slope2 += gradN[e] * gradN[e];
-                slopeMass_[i] += t.m * grid_.h() * grid_.h() * slope2;
+                nodes_.slopeMass[i] += t.m * grid_.h() * grid_.h() * slope2;
                 for (int d = 0; d < D; ++d) {
                     Real vi = v[d];
                     for (int e = 0; e < D; ++e) vi += C[d * D + e] * dx[e];
-                    momS_[i * D + d] += N * t.m * vi;
+                    nodes_.momS[i * D + d] += N * t.m * vi;
                     Real f = 0;
                     for (int e = 0; e < D; ++e) f += t.stressV[d][e] * gradN[e];
-                    forceS_[i * D + d] += f;
+                    nodes_.forceS[i * D + d] += f;
                 }
-                if (axisymmetric) forceS_[i * D] -= t.hoop * N;
+                if (axisymmetric) nodes_.forceS[i * D] -= t.hoop * N;
             });
         });
     }
     withStencilKind(!gimp, [&](auto linearShapes) {
         constexpr bool linear = decltype(linearShapes)::value;
-        forEachPointColoured(grid_, liquidCellStart_, slabRows(linear), [&](Index p) {
-            Real* const mass = massL_.data();
-            Real* const mom = momL_.data();
+        forEachPointColoured(grid_, cells_.liquidStart, slabRows(linear), [&](Index p) {
+            Real* const mass = nodes_.massL.data();
+            Real* const mom = nodes_.momL.data();
             const Real m = liquid_.mass[p];
             Real mv[D];
             for (int d = 0; d < D; ++d) mv[d] = m * liquid_.v[p * D + d];
@@ -394,20 +393,19 @@ void DoublePointSolver<D>::pointsToGrid() {
         Real vol = 0, solidSide = 0;
         grid_.forEachCellOfNode(i, [&](Index cell, int corner) {
             const Real share = grid_.cellShare(cell, corner);
-            if (cellActive_[cell]) vol += share;
-            if (solidCellStart_[cell + 1] > solidCellStart_[cell]) solidSide += share;
+            if (filling_.active[cell]) vol += share;
+            if (cells_.hasSolid(cell)) solidSide += share;
         });
-        nodeVolume_[i] = vol;
-        const Real por = vol > 0 ? 1 - solidVolume_[i] / vol : 1.0;
-        porosity_[i] = std::clamp(por, Real(1e-3), Real(1));
+        const Real por = vol > 0 ? 1 - sums_.grainVolume[i] / vol : 1.0;
+        nodes_.porosity[i] = std::clamp(por, Real(1e-3), Real(1));
         // The porosity of the sand itself, over the cells that hold sand only: at the filter and
         // at a sand surface on a node it is the bed's, where n_i blends in the free water beside
         // it. The liquid-state switch and fluidised points read this one.
-        sandPorosity_[i] = solidSide > 0 ? std::clamp(1 - solidVolume_[i] / solidSide, Real(1e-3), Real(1)) : 1.0;
+        nodes_.sandPorosity[i] = solidSide > 0 ? std::clamp(1 - sums_.grainVolume[i] / solidSide, Real(1e-3), Real(1)) : 1.0;
         // Darcy + Ergun drag, lumped: Q_i = n_i^2 mu sum(N V / kappa)
         //                                 + rho_L n_i^3 |w_i| sum(N V F / sqrt(kappa)),
         // |w_i| from the last step (physics.md, drag).
-        const Real ni = porosity_[i];
+        const Real ni = nodes_.porosity[i];
         // The nodal liquid mass is the water the cells around the node hold, rho_L n_i V_w,i
         // (waterVolumeAt), not the sum over liquid points. The points bunch where the chamber
         // water enters the sand (+35 % / -15 %, physics.md's first open problem), which made the
@@ -424,21 +422,21 @@ void DoublePointSolver<D>::pointsToGrid() {
         // that forces at the nodes of a stray point, where the grid holds f^2 of a share, reach it
         // less amplified, was tried: a point falling back then dragged the water below harder,
         // 1.6 Pa in the sand against 1.0 Pa, test_FreeSurface.cpp.)
-        if (gridLiquid && i >= gateRow && massL_[i] > 0) {
+        if (gridLiquid && i >= gateRow && nodes_.massL[i] > 0) {
             const Real M = rhoL * ni * waterVolumeAt(i);
             if (M > 0) {
-                const Real scale = M / massL_[i];
-                massL_[i] = M;
-                for (int d = 0; d < D; ++d) momL_[i * D + d] *= scale;
+                const Real scale = M / nodes_.massL[i];
+                nodes_.massL[i] = M;
+                for (int d = 0; d < D; ++d) nodes_.momL[i * D + d] *= scale;
             }
         }
-        drag_[i] = (massS_[i] > 0 && massL_[i] > 0)
-                       ? ni * ni * mu * dragA_[i] + rhoL * ni * ni * ni * relSpeed_[i] * dragB_[i]
+        nodes_.drag[i] = (nodes_.massS[i] > 0 && nodes_.massL[i] > 0)
+                       ? ni * ni * mu * sums_.darcy[i] + rhoL * ni * ni * ni * nodes_.relSpeed[i] * sums_.forchheimer[i]
                        : 0.0;
         // how far the node is fed with sand, per component (a held one keeps its weight): the
         // phases after this read a starved node through it (GridToPoints.cpp)
         const Real w = fedWeight(i, starved);
-        for (int d = 0; d < D; ++d) fedWeight_[i * D + d] = masks_.solidFixed[i * D + d] ? Real(1) : w;
+        for (int d = 0; d < D; ++d) nodes_.fedWeight[i * D + d] = masks_.solidFixed[i * D + d] ? Real(1) : w;
     });
 }
 
@@ -451,9 +449,9 @@ void DoublePointSolver<D>::measureSandPorosity() {
     // the mean of the cell's nodal sand porosities: the grid's solid mass in the cell
     forAll(grid_.numCells(), [&](Index c) {
         Real sand = 0;
-        grid_.forEachNodeOfCell(c, [&](Index i, int) { sand += sandPorosity_[i] / (1 << D); });
-        cellSandPorosity_[c] = sand;
-        cellSandSurface_[c] = 0;
+        grid_.forEachNodeOfCell(c, [&](Index i, int) { sand += nodes_.sandPorosity[i] / (1 << D); });
+        sand_.porosity[c] = sand;
+        sand_.surface[c] = 0;
     });
     // At the top of the sand the grid cannot tell a loose cell from a half-filled one: the sand
     // surface lies inside the top sand cell, whose nodes then see too little solid, and so does
@@ -463,22 +461,21 @@ void DoublePointSolver<D>::measureSandPorosity() {
     // porosity up to its surface.
     const Index up = grid_.cellStride(D - 1), rows = grid_.cells(D - 1);
     const Index columns = grid_.numCells() / rows;
-    auto hasSand = [&](Index c) { return solidCellStart_[c + 1] > solidCellStart_[c]; };
     forAll(columns, [&](Index col) {
         for (Index row = rows - 1; row >= 2; --row) {
             const Index top = col + row * up;
-            if (!hasSand(top)) continue;
+            if (!cells_.hasSolid(top)) continue;
             const Index below = top - up, base = below - up;
-            if (!hasSand(below) || !hasSand(base)) break;
+            if (!cells_.hasSolid(below) || !cells_.hasSolid(base)) break;
             Real n = 0;  // the bottom node row of `below` = the top node row of `base`
             int count = 0;
             grid_.forEachNodeOfCell(base, [&](Index i, int corner) {
-                if ((corner >> (D - 1)) & 1) { n += sandPorosity_[i]; ++count; }
+                if ((corner >> (D - 1)) & 1) { n += nodes_.sandPorosity[i]; ++count; }
             });
             n /= count;
             for (Index c : {top, below}) {
-                cellSandPorosity_[c] = n;
-                cellSandSurface_[c] = 1;
+                sand_.porosity[c] = n;
+                sand_.surface[c] = 1;
             }
             break;
         }

@@ -43,8 +43,11 @@ double liquidBytes(int D, bool gimp) {
     const double scratch = 8.0 * 6 + 4.0 * 6 + 8;        // reorder scratch (reals, ints, order)
     return state + shape + perStep + scratch;
 }
-double nodeBytes(int D) { return 8.0 * 9 + 8.0 * 8 * D + 2.0 * D; }  // scalars, vectors, masks
-double cellBytes(int D) { return 8.0 * 3 + 2 + 8.0 * (6 + D); }
+// the field sets of solver/GridFields.hpp: per node 7 scalars, 3 transfer sums, 8 vectors, the
+// diffusion flag and the boundary masks (2 per axis); per cell 3 indices, 6 flags, 8 scalars and
+// the pressure gradient
+double nodeBytes(int D) { return 8.0 * (7 + 3) + 8.0 * 8 * D + 1 + 2.0 * D; }
+double cellBytes(int D) { return 8.0 * 3 + 6 + 8.0 * (8 + D); }
 
 }  // namespace
 

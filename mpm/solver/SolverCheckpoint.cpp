@@ -122,8 +122,8 @@ void DoublePointSolver<D>::saveState(CheckpointData& data) const {
     data.putScalar("dt", dt_);
     putSet(data, "solid", self.solid_);
     putSet(data, "liquid", self.liquid_);
-    data.put("rel_speed", relSpeed_);
-    data.put("pressure_gradient", cellPressureGradient_);
+    data.put("rel_speed", nodes_.relSpeed);
+    data.put("pressure_gradient", water_.pressureGradient);
     data.putScalar("cavity_is_water_strain", 1);
     data.put("gap", const_cast<InflowChamber<D>&>(chamber_).gaps());
     data.put("reservoir", reservoir_.saveState());
@@ -167,16 +167,16 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
         QS_CHECK(solid_.porosity[p] > 0 && solid_.porosity[p] < 1,
                  "solid point " << p << " has porosity " << solid_.porosity[p] << ", outside (0, 1)" << kNotThisCase);
     const auto& rs = finiteValues(data, "rel_speed", 0);
-    QS_CHECK(rs.size() == relSpeed_.size(), "the checkpoint's grid differs from the case's grid");
-    relSpeed_ = rs;
+    QS_CHECK(rs.size() == nodes_.relSpeed.size(), "the checkpoint's grid differs from the case's grid");
+    nodes_.relSpeed = rs;
     // the cells' pore-pressure gradient of the last step, which centres this step's cell pressures
     // (GridUpdate.cpp); a checkpoint written before it was kept starts from none
     if (data.has("pressure_gradient")) {
         const auto& pg = finiteValues(data, "pressure_gradient", 0);
-        QS_CHECK(pg.size() == cellPressureGradient_.size(), "the checkpoint's grid differs from the case's grid");
-        cellPressureGradient_ = pg;
+        QS_CHECK(pg.size() == water_.pressureGradient.size(), "the checkpoint's grid differs from the case's grid");
+        water_.pressureGradient = pg;
     } else {
-        std::fill(cellPressureGradient_.begin(), cellPressureGradient_.end(), 0.0);
+        std::fill(water_.pressureGradient.begin(), water_.pressureGradient.end(), 0.0);
     }
     const auto& gaps = finiteValues(data, "gap", 0);
     QS_CHECK(gaps.size() == chamber_.gaps().size(),
