@@ -1,6 +1,7 @@
 #!/usr/bin/env python3
 """The statistics of piping ensembles: one random bed over many seeds, grouped by the porosity
-field's standard deviation and correlation length (docs/piping.md, "Ensembles").
+field's standard deviation and correlation length and by the reservoir's head (docs/piping.md,
+"Ensembles").
 
   python3 tools/piping_ensemble.py STUDY/output [STUDY2/output ...] [--out DIR]
 
@@ -8,7 +9,7 @@ Reads each study's study.csv (tools/study.py; the pipe figures of tools/study_fi
 each variant's case.effective.toml (for the field's statistics, whether varied or not), and writes
 to --out (default: the first study's output directory):
 
-  piping_ensemble.csv   per (standard deviation, correlation length): runs, runs that piped, the
+  piping_ensemble.csv   per (standard deviation, correlation length, reservoir head): runs, runs that piped, the
                         gradient at the first pipe (mean, standard deviation, least, largest), its
                         time (mean), the share of first pipes at a wall, the share of piped outputs
                         whose main pipe is at a wall, and the largest flux share of one pipe (mean)
@@ -48,10 +49,12 @@ def read_runs(output_dir):
                 continue
             case_file = os.path.join(output_dir, row["variant"], "case.effective.toml")
             with open(case_file, "rb") as c:
-                field = tomllib.load(c).get("initial", {}).get("porosity_field", {})
+                case = tomllib.load(c)
+            field = case.get("initial", {}).get("porosity_field", {})
             runs.append({"sigma": float(field.get("standard_deviation", 0.0)),
                          "length": float(field.get("correlation_length", 0.0)),
                          "seed": int(field.get("seed", 1)),
+                         "head": float(case.get("reservoir", {}).get("head", float("nan"))),
                          "gradient": number(row.get("first_pipe_gradient")),
                          "time": number(row.get("first_pipe_time_s")),
                          "wall": number(row.get("first_pipe_wall")),
@@ -63,12 +66,13 @@ def read_runs(output_dir):
 def summarise(runs):
     groups = {}
     for r in runs:
-        groups.setdefault((r["sigma"], r["length"]), []).append(r)
+        groups.setdefault((r["sigma"], r["length"], r["head"]), []).append(r)
     rows = []
-    for (sigma, length), rs in sorted(groups.items()):
+    for (sigma, length, head), rs in sorted(groups.items()):
         piped = [r for r in rs if np.isfinite(r["gradient"])]
         g = np.array([r["gradient"] for r in piped])
-        rows.append({"standard_deviation": sigma, "correlation_length_m": length, "runs": len(rs),
+        rows.append({"standard_deviation": sigma, "correlation_length_m": length, "reservoir_head_m": head,
+                     "runs": len(rs),
                      "piped": len(piped),
                      "first_pipe_gradient_mean": g.mean() if len(g) else np.nan,
                      "first_pipe_gradient_std": g.std(ddof=1) if len(g) > 1 else np.nan,
@@ -92,7 +96,9 @@ def write_csv(path, rows):
 
 
 def plot(path, rows):
-    labels = [f"sd {r['standard_deviation']:g}\nl {r['correlation_length_m'] * 1e3:g} mm" for r in rows]
+    heads = {r["reservoir_head_m"] for r in rows}
+    labels = [f"sd {r['standard_deviation']:g}\nl {r['correlation_length_m'] * 1e3:g} mm"
+              + (f"\nhead {r['reservoir_head_m']:.4g} m" if len(heads) > 1 else "") for r in rows]
     x = np.arange(len(rows))
     fig, ax = plt.subplots(3, 1, figsize=(max(6, 1.3 * len(rows) + 2), 9), sharex=True)
     for k, r in enumerate(rows):
@@ -136,7 +142,8 @@ def main():
     write_csv(os.path.join(out, "piping_ensemble.csv"), rows)
     plot(os.path.join(out, "piping_ensemble.png"), rows)
     for r in rows:
-        print(f"sd {r['standard_deviation']:g}, l {r['correlation_length_m'] * 1e3:g} mm: {r['piped']}/{r['runs']} piped, "
+        print(f"sd {r['standard_deviation']:g}, l {r['correlation_length_m'] * 1e3:g} mm, head {r['reservoir_head_m']:.5g} m: "
+              f"{r['piped']}/{r['runs']} piped, "
               f"first-pipe gradient {r['first_pipe_gradient_mean']:.4f} +- {r['first_pipe_gradient_std']:.4f} "
               f"[{r['first_pipe_gradient_min']:.4f}, {r['first_pipe_gradient_max']:.4f}] at "
               f"{r['first_pipe_time_mean_s']:.2f} s; at a wall: first {r['first_pipe_at_wall_share']:.2f}, "
