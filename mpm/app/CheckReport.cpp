@@ -111,13 +111,11 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         out << "random porosity field: n0 + " << f.standardDeviation << " g(x), correlation length "
             << f.correlationLength << " m, seed " << f.seed << " (clipped to [n_min, n_max - 0.001])\n";
 
-    double cMax = std::sqrt(KL / rho);
     for (const auto& m : config.materials) {
         const auto law = PermeabilityLaw::from(m);
         const double n = m.porosity, kappa = law.kappa(n);
         const double Eoed = closed::oedometricModulus(m.youngsModulus, m.poissonRatio);
         const auto waves = closed::zeroDragWaveSpeeds(Eoed, KL, n, m.grainDensity, rho);
-        cMax = std::max(cMax, waves.fast);
         // K = kappa rho g / mu needs gravity; without it, quote K at standard gravity
         const bool weightless = !(g > 0);
         const double K = closed::hydraulicConductivity(kappa, rho, weightless ? 9.81 : g, mu);
@@ -137,10 +135,15 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         out << "  oedometric modulus E_oed                 " << Eoed << " Pa\n";
         out << "  wave speeds fast / slow / undrained      " << waves.fast << " / " << waves.slow << " / "
             << closed::undrainedWaveSpeed(Eoed, KL, n, m.grainDensity, rho) << " m/s\n";
+        out << "  skeleton's own wave sqrt(E_oed/((1-n)rho_s)) " << std::sqrt(Eoed / ((1 - n) * m.grainDensity))
+            << " m/s\n";
         // c_v = k/(gamma_w (m_v + n/K_L)) = (kappa/mu)/(m_v + n/K_L): independent of g
         out << "  consolidation coefficient c_v            "
             << (kappa / mu) / (1 / Eoed + n / KL) << " m2/s\n";
     }
+    // the step the solver takes (solver/RunSize.hpp): the same c_fast as the closed forms above,
+    // from the materials' constitutive models
+    const double cMax = fastestWaveSpeed(config);
     const double dtStable = config.time.courant * h / cMax;
     out << "time step: c_fast = " << cMax << " m/s, dt = courant h / c_fast = " << dtStable << " s ("
         << stepCount(config.time.end / (config.time.dt ? *config.time.dt : dtStable)) << " steps to t = " << config.time.end << " s)\n";

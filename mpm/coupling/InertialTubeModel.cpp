@@ -4,7 +4,7 @@
 
 #include "core/Error.hpp"
 #include "core/Constants.hpp"
-#include "physics/ClosedForms.hpp"
+#include "physics/PipeFriction.hpp"
 
 namespace qs {
 
@@ -12,7 +12,7 @@ InertialTubeModel::InertialTubeModel(const InertialTubeParameters& p) : p_(p) {
     QS_CHECK(p.area > 0 && p.tubeDiameter > 0 && p.tubeLength > 0,
              "inertial tube: reservoir area, tube diameter and length must be > 0");
     QS_CHECK(p.minorLoss == 0, "inertial tube: minor losses are not modelled; set them to 0");
-    resistance_ = closed::tubeResistance(p.tubeDiameter, p.tubeLength, p.liquidDensity, p.gravity, p.viscosity);
+    resistance_ = friction::laminarHeadPerFlow(p.tubeDiameter, p.tubeLength, p.liquidDensity, p.gravity, p.viscosity);
     const double length = p.inertialLength < 0 ? p.tubeLength : p.inertialLength;
     inertance_ = length / (kPi * p.tubeDiameter * p.tubeDiameter / 4);
     head_ = trialHead_ = p.initialHead;

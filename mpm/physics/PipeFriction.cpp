@@ -2,6 +2,7 @@
 
 #include <cmath>
 
+#include "core/Constants.hpp"
 #include "core/Error.hpp"
 
 namespace qs::friction {
@@ -45,6 +46,11 @@ double frictionMultiplier(double reynolds) {
     // f Re / 64 = [1 + (Re/8)^12 (A + B)^(-3/2)]^(1/12): no 1/Re to blow up as the flow stops
     if (!(reynolds > 0)) return 1.0;
     return std::pow(1.0 + std::pow(reynolds / 8.0, 12) * turbulentTerm(reynolds, 0.0), 1.0 / 12.0);
+}
+
+double laminarHeadPerFlow(double d, double L, double rho, double g, double mu) {
+    const double nu = mu / rho, area = 0.25 * kPi * d * d;
+    return 32 * nu * L / (g * d * d * area);
 }
 
 }  // namespace qs::friction

@@ -23,5 +23,9 @@ double colebrookSmooth(double reynolds);
 double churchill(double reynolds, double relativeRoughness = 0.0);
 /// f Re / 64 of Churchill's law for a smooth pipe: the loss over the laminar one (1 as Re -> 0).
 double frictionMultiplier(double reynolds);
+/// s/m2, the head a laminar flow loses per flow rate in a tube, h_f / Q: the laminar f = 64/Re in
+/// h_f = f (L/d) U^2/(2g) gives h_f = 32 nu L U / (g d^2), with U = Q / (pi d^2 / 4). The
+/// reservoirs' tube loss (the tests check it against physics/ClosedForms' Hagen-Poiseuille form).
+double laminarHeadPerFlow(double diameter, double length, double liquidDensity, double gravity, double viscosity);
 
 }  // namespace qs::friction

@@ -2,7 +2,6 @@
 
 #include "core/Constants.hpp"
 #include "core/Error.hpp"
-#include "physics/ClosedForms.hpp"
 #include "physics/PipeFriction.hpp"
 
 #include <algorithm>
@@ -25,8 +24,8 @@ LumpedReservoir::LumpedReservoir(const LumpedReservoirParameters& parameters)
              "K rho/2 (Q/A_t)^2 with A_t the tube area)");
     if (p_.tubeDiameter > 0.0) {
         tubeArea_ = kPi * p_.tubeDiameter * p_.tubeDiameter / 4.0;
-        tubeResistance_ = closed::tubeResistance(p_.tubeDiameter, p_.tubeLength, p_.liquidDensity,
-                                                 p_.gravity, p_.viscosity);
+        tubeResistance_ = friction::laminarHeadPerFlow(p_.tubeDiameter, p_.tubeLength, p_.liquidDensity,
+                                                       p_.gravity, p_.viscosity);
     }
 }
 

@@ -6,7 +6,7 @@
 
 #include "core/Error.hpp"
 #include "materials/StressTensor.hpp"
-#include "physics/ClosedForms.hpp"
+#include "materials/ConstitutiveModels.hpp"
 #include "physics/Permeability.hpp"
 #include "physics/RandomPorosityField.hpp"
 #include "solver/DoublePointSolver.hpp"
@@ -204,7 +204,7 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
     // start the closed chamber shares the sand's excess pressure (it drains only upwards).
     if (config.initial.undrainedSurcharge) {
         const auto& m = config.material(config.layers.front().material);  // no zones (CaseLoader)
-        const Real mv = 1 / closed::oedometricModulus(m.youngsModulus, m.poissonRatio);
+        const Real mv = 1 / makeConstitutiveModel(m)->oedometricModulus();
         chamberExcess += config.loads.surcharge * mv / (mv + m.porosity / config.liquid.bulkModulus);
     }
     const int nzFree = freeWaterPointsPerCell(config);

@@ -10,7 +10,8 @@
 #include <string>
 
 #include "core/Error.hpp"
-#include "physics/ClosedForms.hpp"
+#include "materials/ConstitutiveModels.hpp"
+#include "physics/WaveSpeeds.hpp"
 #include "solver/ColumnBuilder.hpp"
 
 namespace qs {
@@ -59,10 +60,11 @@ std::int64_t liquidCapacity(const CaseConfig& config, std::int64_t cells, std::i
 
 double fastestWaveSpeed(const CaseConfig& config) {
     const double KL = config.liquid.bulkModulus, rhoL = config.liquid.density;
-    double c = std::sqrt(KL / rhoL);  // free water
+    double c = freeWaterWave(KL, rhoL);
+    // the skeleton's stiffness from its constitutive model: a new model sizes the step itself
     for (const auto& m : config.materials) {
-        const double Eoed = closed::oedometricModulus(m.youngsModulus, m.poissonRatio);
-        c = std::max(c, closed::zeroDragWaveSpeeds(Eoed, KL, m.porosity, m.grainDensity, rhoL).fast);
+        const double Eoed = makeConstitutiveModel(m)->oedometricModulus();
+        c = std::max(c, mixtureWaves(Eoed, KL, m.porosity, m.grainDensity, rhoL).fast);
     }
     return c;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "physics/PipeFriction.hpp"
+#include "physics/ClosedForms.hpp"
 
 using namespace qs;
 
@@ -44,3 +45,18 @@ TEST(PipeFriction, ChurchillIsSmoothThroughTheTransition) {
         last = f;
     }
 }
+
+namespace qs::friction {
+namespace {
+
+TEST(LaminarHeadPerFlow, IsTheClosedFormsHagenPoiseuille) {
+    // the reservoirs' tube loss against physics/ClosedForms' 128 mu L / (pi rho g d^4)
+    for (double d : {0.004, 0.0254, 0.05})
+        for (double L : {0.5, 2.0})
+            EXPECT_NEAR(laminarHeadPerFlow(d, L, 998.2, 9.81, 8.91e-4) / closed::tubeResistance(d, L, 998.2, 9.81, 8.91e-4),
+                        1.0, 1e-13)
+                << "d " << d << ", L " << L;
+}
+
+}  // namespace
+}  // namespace qs::friction
