@@ -10,6 +10,7 @@
 #include "coupling/WindowedModel.hpp"
 #include "physics/ClosedForms.hpp"
 #include "physics/PipeFriction.hpp"
+#include "physics/WaveSpeeds.hpp"
 #include "physics/Permeability.hpp"
 #include "solver/ColumnBuilder.hpp"
 #include "solver/RunPreconditions.hpp"
@@ -135,8 +136,8 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         out << "  oedometric modulus E_oed                 " << Eoed << " Pa\n";
         out << "  wave speeds fast / slow / undrained      " << waves.fast << " / " << waves.slow << " / "
             << closed::undrainedWaveSpeed(Eoed, KL, n, m.grainDensity, rho) << " m/s\n";
-        out << "  skeleton's own wave sqrt(E_oed/((1-n)rho_s)) " << std::sqrt(Eoed / ((1 - n) * m.grainDensity))
-            << " m/s\n";
+        out << "  skeleton's own wave sqrt(E_oed/((1-n)rho_s)) "
+            << mixtureWaves(Eoed, KL, n, m.grainDensity, rho).skeleton << " m/s\n";
         // c_v = k/(gamma_w (m_v + n/K_L)) = (kappa/mu)/(m_v + n/K_L): independent of g
         out << "  consolidation coefficient c_v            "
             << (kappa / mu) / (1 / Eoed + n / KL) << " m2/s\n";

@@ -6,7 +6,6 @@
 
 #include "core/Error.hpp"
 #include "materials/StressTensor.hpp"
-#include "materials/ConstitutiveModels.hpp"
 #include "physics/Permeability.hpp"
 #include "physics/RandomPorosityField.hpp"
 #include "solver/DoublePointSolver.hpp"
@@ -203,8 +202,9 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
     // Free water: the chamber below the filter and the water above the sand. In an undrained
     // start the closed chamber shares the sand's excess pressure (it drains only upwards).
     if (config.initial.undrainedSurcharge) {
-        const auto& m = config.material(config.layers.front().material);  // no zones (CaseLoader)
-        const Real mv = 1 / makeConstitutiveModel(m)->oedometricModulus();
+        const std::string& name = config.layers.front().material;  // no zones (CaseLoader)
+        const auto& m = config.material(name);
+        const Real mv = 1 / materials[materialIndex(name)].model->oedometricModulus();
         chamberExcess += config.loads.surcharge * mv / (mv + m.porosity / config.liquid.bulkModulus);
     }
     const int nzFree = freeWaterPointsPerCell(config);
