@@ -32,6 +32,10 @@ enum class ConstitutiveModelKind { LinearElastic, MohrCoulomb };
 enum class InitialStress { K0, Zero };
 enum class InitialState { Solid, Fluidised };
 enum class GateMode { Pressure, Flux, Closed };
+/// How a step advances the nodes' velocities and the pore pressure (solver/TimeIntegrator.hpp):
+/// all explicit, bounded by the water's compression wave, or with the pressure implicit
+/// (a projection), bounded by the skeleton's wave only.
+enum class TimeScheme { Explicit, SemiImplicit };
 /// What sand reaching the overflow level does: leaves with the water, or stops the run.
 enum class SandOverflow { Carry, Stop };
 enum class ReservoirKind { ConstantHead, Lumped, OpenFoam };
@@ -194,7 +198,8 @@ struct CouplingConfig {
 
 struct TimeConfig {
     double end = 1.0;                  ///< s, simulated time
-    double courant = 0.4;              ///< -, dt = courant * h / c_fast, in (0, 0.5]
+    TimeScheme scheme = TimeScheme::Explicit;
+    double courant = 0.4;              ///< -, dt = courant * h / c, c the scheme's wave speed, in (0, 0.5]
     std::optional<double> dt;          ///< s, fixed step (must not exceed the stable one)
     double outputInterval = 0.01;      ///< s
     double checkpointInterval = 0.0;   ///< s of simulated time (0: only at the end)

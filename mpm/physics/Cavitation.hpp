@@ -29,6 +29,12 @@ struct CavitatingWater {
     Real cavity;    ///< -, the volumetric strain opened at the limit (>= 0)
 };
 
+/// Pa, the lowest pressure a cell's water takes: the cavitation limit p_min, and no suction where
+/// the water is open to the air (its surface rises instead).
+inline Real waterLimit(bool openToAir, Real cavitationPressure) {
+    return openToAir ? std::max(cavitationPressure, Real(0)) : cavitationPressure;
+}
+
 /// The water's strain relative to p = 0, e = c - p / K_L: what its volume has gained.
 inline Real waterStrain(CavitatingWater w, Real bulkModulus) { return w.cavity - w.pressure / bulkModulus; }
 

@@ -49,7 +49,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
     grid_ = Grid<D>(cells, h, config.grid.crossSectionArea, config.grid.geometry == GridGeometry::Axisymmetric,
                     config.points.solidPerCell);
 
-    waveSpeed_ = fastestWaveSpeed(config);
+    waveSpeed_ = schemeWaveSpeed(config);
     for (const auto& m : config.materials) {
         SolidMaterial s;
         s.name = m.name;
@@ -63,8 +63,9 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.frontDiffusivity = frontDiffusivity(config, m, h);
         materials_.push_back(s);
     }
-    // dt = C h / c_fast: with implicit drag the fastest explicit wave is the zero-drag fast wave
-    // (solver/RunSize.hpp, the same step `quicksand check` reports)
+    // dt = C h / c: with implicit drag the fastest explicit wave is the zero-drag fast wave, and
+    // with the pressure implicit too the skeleton's (solver/RunSize.hpp, the same step `quicksand
+    // check` reports)
     requireStableTimeStep(config);
     dt_ = timeStep(config);
 
@@ -72,6 +73,8 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
     buildColumn(config, grid_, materials_, solid_, liquid_);
     allocate();
     masks_.build(grid_, config);
+    for (Index i : masks_.gateNodes) gateArea_ += nodeFootprint(grid_, i);
+    integrator_ = makeTimeIntegrator(StepContext<D>{config_, grid_, masks_, cells_, filling_, water_, nodes_});
     // new points as short as the free-water points, so they do not leave sand cells empty
     chamber_.setup(grid_, h / freeWaterPointsPerCell(config), config.points.liquidPerCell);
 
@@ -138,7 +141,7 @@ void DoublePointSolver<D>::step() {
     pointsToGrid();
     measureSandPorosity();
     computeForces();
-    solveNodes();
+    gateFlux_ = integrator_->solveVelocities(stepInputs(), time_);
     switchLiquidState();
     diffuseFronts();
     gridToPoints();
@@ -190,6 +193,21 @@ Real DoublePointSolver<D>::gateVelocityNow() const {
     // from the initial seepage (at rest by default) to the gate's flux, linearly over the ramp
     const Real v0 = config_.initial.filterVelocity, v = config_.gate.flux, ramp = config_.gate.fluxRampTime;
     return (ramp > 0 && time_ < ramp) ? v0 + (v - v0) * time_ / ramp : v;
+}
+
+template <int D>
+StepInputs DoublePointSolver<D>::stepInputs() const {
+    StepInputs in;
+    in.dt = dt_;
+    in.damping = damping_;
+    in.dampingAlpha = dampingAlpha_;
+    in.gate.velocity = gateVelocityNow();
+    in.gate.area = gateArea_;
+    in.gate.resistance = config_.gate.mode == GateMode::Pressure ? gateLaw_.resistance : 0.0;
+    // in 2D and 3D a pressure gate moves its water in at one velocity across the gate plane
+    // (NodeVelocities.cpp); in 1D the gate is one node and the two are the same
+    in.gate.uniform = D > 1 && config_.gate.mode == GateMode::Pressure;
+    return in;
 }
 
 template <int D>

@@ -13,7 +13,8 @@
 //   2 pointsToGrid        lumped masses, momenta, nodal porosity, drag coefficients
 //   2b measureSandPorosity  the sand's own porosity per cell (the surface's top cells corrected)
 //   3 computeForces       gravity, effective stress, cell pore pressure, gate and surface tractions
-//   4 solveNodes          predictors, implicit drag, filter / walls / gate
+//   4 solveVelocities     the time scheme (TimeIntegrator.hpp): predictors, implicit drag, filter /
+//                         walls / gate; the semi-implicit scheme's pressure increment
 //   4b switchLiquidState  per cell: solid or fluidised (physics/LiquidStateRule.hpp)
 //   4c diffuseFronts      kinematic diffusion where the sand carries no stress (FrontDiffusion)
 //   5 gridToPoints        velocities (solid APIC, liquid FLIP), positions, strains, stress, porosity, liquid volume
@@ -35,6 +36,7 @@
 #include "grid/Grid.hpp"
 #include "io/CaseConfig.hpp"
 #include "materials/ConstitutiveModel.hpp"
+#include "physics/Cavitation.hpp"
 #include "physics/LiquidStateRule.hpp"
 #include "physics/FrontDiffusion.hpp"
 #include "physics/Pipes.hpp"
@@ -43,6 +45,7 @@
 #include "points/LiquidPoints.hpp"
 #include "points/SolidPoints.hpp"
 #include "solver/GridFields.hpp"
+#include "solver/TimeIntegrator.hpp"
 #include "reservoir/ReservoirModel.hpp"
 
 namespace qs {
@@ -104,6 +107,9 @@ template <int D>
 class DoublePointSolver {
 public:
     DoublePointSolver(const CaseConfig& config, ReservoirModel& reservoir);
+    // the time scheme holds references to the solver's fields: it stays where it was built
+    DoublePointSolver(const DoublePointSolver&) = delete;
+    DoublePointSolver& operator=(const DoublePointSolver&) = delete;
 
     /// Advances by dt(). Throws qs::Error if the state becomes invalid (solid reaching the
     /// overflow, a non-finite value), naming time and place.
@@ -122,9 +128,10 @@ public:
     /// The sand's state and porosity per cell and the water crossing the filter plane per column
     /// of cells, as the pipe measurement reads them (physics/Pipes.hpp). 2D and 3D.
     SandCells sandCells() const;
-    /// Fastest wave speed used for the time step (m/s).
+    /// The wave speed the time step follows (m/s): c_fast (explicit) or c_skeleton (semi-implicit).
     Real waveSpeed() const { return waveSpeed_; }
-    /// The share of its slope mass below which a node is starved: C^2 / 2, C = dt c_fast / h
+    TimeScheme scheme() const { return integrator_->scheme(); }
+    /// The share of its slope mass below which a node is starved: C^2 / 2, C = dt c / h
     /// (GridToPoints.cpp)
     Real starvedShare() const { const Real c = dt_ * waveSpeed_ / grid_.h(); return 0.5 * c * c; }
     /// Each node's solid mass over its slope mass, m_i / S_i, from the last step's transfer; -1
@@ -143,7 +150,6 @@ private:
     void measureSandPorosity();
     void computeForces();
     void computePressureGradient();
-    void solveNodes();
     void switchLiquidState();
     void diffuseFronts();
     void gridToPoints();
@@ -167,7 +173,7 @@ private:
                         const std::optional<HorizontalRange>& y) const;
     Real waterVolumeAt(Index node) const;
     Real gateVelocityNow() const;
-    void uniformGateVelocity(Real resistance);
+    StepInputs stepInputs() const;
 
     const CaseConfig& config_;
     ReservoirModel& reservoir_;
@@ -185,16 +191,15 @@ private:
     CellWater<D> water_;
     CellSandState sand_;
     /// Pa, the lowest pressure a cell's water takes: no suction where it is open to the air
-    Real cellLimit(Index c) const {
-        const Real pMin = config_.liquid.cavitationPressure;
-        return filling_.openToAir[c] ? std::max(pMin, Real(0)) : pMin;
-    }
+    Real cellLimit(Index c) const { return waterLimit(filling_.openToAir[c], config_.liquid.cavitationPressure); }
     /// How far a node is fed with sand: m_i / (share S_i) for a starved node, else 1 (GridToPoints.cpp)
     Real fedWeight(Index i, Real share) const {
         const Real need = share * nodes_.slopeMass[i];
         return nodes_.massS[i] < need ? nodes_.massS[i] / need : Real(1);
     }
     BoundaryMasks<D> masks_;
+    std::unique_ptr<TimeIntegrator<D>> integrator_;  ///< phase 4: the velocities, by time.scheme
+    Real gateArea_ = 0;                              ///< m2, the gate plane's
     InflowChamber<D> chamber_;
     std::vector<char> dropFlags_;    ///< scratch of the outflow removal
     std::vector<Index> spillOrder_;  ///< scratch of the overflow's weir: the points above the rim, lowest first

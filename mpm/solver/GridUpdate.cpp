@@ -1,6 +1,6 @@
-// Phases 3 and 4 of the double-point step: the nodal forces (gravity, cell pore pressure on both
-// phases, gate and surface tractions), then the nodal velocities with implicit drag and the
-// boundary conditions (physics.md section 2).
+// Phase 3 of the double-point step: the nodal forces (gravity, cell pore pressure on both
+// phases, gate and surface tractions; physics.md section 2). Phase 4, the velocities, is the time
+// scheme's (solver/TimeIntegrator.hpp).
 #include <algorithm>
 #include <cmath>
 
@@ -133,125 +133,11 @@ void DoublePointSolver<D>::computeForces() {
         addSurcharge(grid_, solid_, cells_.solidStart, config_.points.solidPerCell, q, nodes_.forceS);
 }
 
-// ---------------------------------------------------------------------------------------------
-// 4 nodal update with implicit drag and boundary conditions
-// ---------------------------------------------------------------------------------------------
-
-template <int D>
-void DoublePointSolver<D>::solveNodes() {
-    const Real dt = dt_;
-    const Real vGate = gateVelocityNow();
-    Real area = 0;
-    for (Index i : masks_.gateNodes) area += nodeFootprint(grid_, i);
-    const Real gateResistance = config_.gate.mode == GateMode::Pressure ? gateLaw_.resistance : 0.0;
-    const Index rowStride = grid_.nodeStride(D - 1);
-    // In 2D and 3D a pressure gate moves its water in at one velocity across the gate plane
-    // (uniformGateVelocity, below); in 1D the gate is one node and the two are the same
-    const bool uniformGate = D > 1 && config_.gate.mode == GateMode::Pressure;
-
-    forAll(grid_.numNodes(), [&](Index i) {
-        const Real mS = nodes_.massS[i], mL = nodes_.massL[i], Q = nodes_.drag[i];
-        const bool isGate = i < rowStride;  // bottom node row
-        // implicit tube loss at the gate: M_L v = M_L v* - dt c v, c = R A_total A_i
-        const Real c = isGate ? gateResistance * area * nodeFootprint(grid_, i) : 0.0;
-        Real w2 = 0;
-        for (int d = 0; d < D; ++d) {
-            const Index k = i * D + d;
-            Real vS0 = mS > 0 ? nodes_.momS[k] / mS : 0.0;
-            Real vL0 = mL > 0 ? nodes_.momL[k] / mL : 0.0;
-            Real fS = nodes_.forceS[k], fL = nodes_.forceL[k];
-            if (damping_) {
-                // local damping, gravity stage only: F <- F - alpha |F| sign(v)
-                fS -= dampingAlpha_ * std::abs(fS) * (vS0 > 0 ? 1 : (vS0 < 0 ? -1 : 0));
-                fL -= dampingAlpha_ * std::abs(fL) * (vL0 > 0 ? 1 : (vL0 < 0 ? -1 : 0));
-            }
-            const Real vS1 = mS > 0 ? vS0 + dt * fS / mS : 0.0;  // drag-free predictors
-            const Real vL1 = mL > 0 ? vL0 + dt * fL / mL : 0.0;
-            const bool vertical = d == D - 1;
-            // a uniform gate takes its tube loss on the whole gate plane, below
-            const Real cd = vertical && !uniformGate ? c : 0.0;
-            const Real vLfix = (isGate && vertical) ? vGate : 0.0;
-            Real vS = 0, vL = 0;
-            if (mS > 0 && mL > 0) {
-                if (masks_.solidFixed[k] && masks_.liquidFixed[k]) {
-                    vS = 0; vL = vLfix;
-                } else if (masks_.solidFixed[k]) {
-                    // solid held: solve the liquid alone (solving the pair and overwriting one
-                    // afterwards loses momentum)
-                    vS = 0;
-                    vL = (mL * vL1) / (mL + dt * Q + dt * cd);
-                } else if (masks_.liquidFixed[k]) {
-                    vL = vLfix;
-                    vS = (mS * vS1 + dt * Q * vL) / (mS + dt * Q);
-                } else {
-                    // drag keeps M_L v_L + M_S v_S and relaxes w = v_L - v_S
-                    const Real M = mL + mS;
-                    const Real vm = (mL * vL1 + mS * vS1) / M;
-                    const Real w = (vL1 - vS1) / (1 + dt * Q * (1 / mL + 1 / mS));
-                    vL = vm + mS * w / M;
-                    vS = vm - mL * w / M;
-                }
-            } else if (mL > 0) {
-                vL = masks_.liquidFixed[k] ? vLfix : mL * vL1 / (mL + dt * cd);
-            } else if (mS > 0) {
-                vS = masks_.solidFixed[k] ? 0.0 : vS1;
-            }
-            nodes_.velS[k] = vS;
-            nodes_.velL[k] = vL;
-            nodes_.velLIncrement[k] = vL - vL0;  // what the FLIP update hands the liquid points
-            w2 += (vL - vS) * (vL - vS);
-        }
-        nodes_.relSpeed[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
-    });
-
-    if (uniformGate) uniformGateVelocity(gateResistance);
-
-    // Gate flux through the gate plane (free water: q = v_L).
-    Real Qg = 0;
-    for (Index i : masks_.gateNodes)
-        if (nodes_.massL[i] > 0) Qg += nodes_.velL[i * D + D - 1] * nodeFootprint(grid_, i);
-    gateFlux_ = Qg;
-}
-
-// The gate plane is where the tube's water enters the chamber, with water on both sides. Held
-// only by a uniform pressure, node by node, the chamber's water would sit on the gate like water
-// in an upturned glass: a free surface with the heavy fluid on top, Rayleigh-Taylor unstable.
-// A lateral mode grew from round-off at 20 /s in a 2D case B at rest and broke it after 2.3 s
-// of flow. The gate therefore moves all its nodes' water at one vertical velocity: the total
-// momentum of the gate row, with the reservoir's pressure (computeForces) and the tube loss
-// R Q A_wet taken implicitly on the whole flux, Q = v A_wet (exact now, where per node it was
-// not; a gate node without water, which injection keeps rare, carries neither).
-// The chamber redistributes the water sideways, as the real one under its filter does.
-template <int D>
-void DoublePointSolver<D>::uniformGateVelocity(Real resistance) {
-    // the wet part of the gate carries the flux, Q = v A_wet, and the tube loss R Q on it
-    Real momentum = 0, mass = 0, wet = 0;
-    for (Index i : masks_.gateNodes) {
-        if (nodes_.massL[i] <= 0) continue;
-        momentum += nodes_.massL[i] * nodes_.velL[i * D + D - 1];  // the drag-free predictor (no solid here)
-        mass += nodes_.massL[i];
-        wet += nodeFootprint(grid_, i);
-    }
-    const Real v = mass > 0 ? momentum / (mass + dt_ * resistance * wet * wet) : 0.0;
-    for (Index i : masks_.gateNodes)
-        if (nodes_.massL[i] > 0) {
-            const Index k = i * D + D - 1;
-            nodes_.velL[k] = v;
-            nodes_.velLIncrement[k] = v - nodes_.momL[k] / nodes_.massL[i];  // from the velocity before the step, as solveNodes
-        }
-}
-
 template void DoublePointSolver<1>::computeForces();
 template void DoublePointSolver<1>::computePressureGradient();
-template void DoublePointSolver<1>::solveNodes();
-template void DoublePointSolver<1>::uniformGateVelocity(Real);
 template void DoublePointSolver<2>::computeForces();
 template void DoublePointSolver<2>::computePressureGradient();
-template void DoublePointSolver<2>::solveNodes();
-template void DoublePointSolver<2>::uniformGateVelocity(Real);
 template void DoublePointSolver<3>::computeForces();
 template void DoublePointSolver<3>::computePressureGradient();
-template void DoublePointSolver<3>::solveNodes();
-template void DoublePointSolver<3>::uniformGateVelocity(Real);
 
 }  // namespace qs

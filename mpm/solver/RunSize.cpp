@@ -69,9 +69,23 @@ double fastestWaveSpeed(const CaseConfig& config) {
     return c;
 }
 
+double skeletonWaveSpeed(const CaseConfig& config) {
+    double c = 0;
+    for (const auto& m : config.materials) {
+        const double Eoed = makeConstitutiveModel(m)->oedometricModulus();
+        c = std::max(c, mixtureWaves(Eoed, config.liquid.bulkModulus, m.porosity, m.grainDensity,
+                                     config.liquid.density).skeleton);
+    }
+    return c;
+}
+
+double schemeWaveSpeed(const CaseConfig& config) {
+    return config.time.scheme == TimeScheme::SemiImplicit ? skeletonWaveSpeed(config) : fastestWaveSpeed(config);
+}
+
 double timeStep(const CaseConfig& config) {
     if (config.time.dt) return *config.time.dt;
-    return config.time.courant * config.grid.cellSize / fastestWaveSpeed(config);
+    return config.time.courant * config.grid.cellSize / schemeWaveSpeed(config);
 }
 
 RunSize estimateRunSize(const CaseConfig& config) {
@@ -145,11 +159,14 @@ MachineMemory machineMemory() {
 
 void requireStableTimeStep(const CaseConfig& config) {
     if (!config.time.dt) return;
-    const double c = fastestWaveSpeed(config), stable = 0.5 * config.grid.cellSize / c;
+    const double c = schemeWaveSpeed(config), stable = 0.5 * config.grid.cellSize / c;
     if (*config.time.dt <= stable) return;
+    const bool semi = config.time.scheme == TimeScheme::SemiImplicit;
+    const char* wave = semi ? "c_skeleton" : "c_fast";
     std::ostringstream s;
     s << config.caseDirectory << "/case.toml: key 'time.dt': " << *config.time.dt
-      << " s exceeds the stable step 0.5 h / c_fast = " << stable << " s (c_fast = " << c
+      << " s exceeds the stable step of the " << (semi ? "semi-implicit" : "explicit") << " scheme, 0.5 h / "
+      << wave << " = " << stable << " s (" << wave << " = " << c
       << " m/s, h = " << config.grid.cellSize << " m): set time.dt <= " << stable
       << " s, or remove it so that the step follows time.courant";
     throw Error(s.str());

@@ -50,7 +50,13 @@ RunSize estimateRunSize(const CaseConfig& config);
 /// m/s, the fastest explicit wave: the zero-drag fast wave of each material, or free water's
 /// sqrt(K_L / rho_L) (physics.md, time step).
 double fastestWaveSpeed(const CaseConfig& config);
-/// s, the step a run takes: time.dt if given, else courant h / c_fast.
+/// m/s, the fastest skeleton wave of the materials, sqrt(E_oed / ((1 - n) rho_s)): what bounds
+/// the semi-implicit step, whose pore pressure and drag are implicit and whose stress is not.
+double skeletonWaveSpeed(const CaseConfig& config);
+/// m/s, the wave that bounds the step of config.time.scheme: fastestWaveSpeed (explicit) or
+/// skeletonWaveSpeed (semi-implicit).
+double schemeWaveSpeed(const CaseConfig& config);
+/// s, the step a run takes: time.dt if given, else courant h / c, c = schemeWaveSpeed.
 double timeStep(const CaseConfig& config);
 
 struct MachineMemory {
@@ -59,7 +65,8 @@ struct MachineMemory {
 };
 MachineMemory machineMemory();
 
-/// Throws qs::Error naming the file and key when time.dt exceeds the stable step 0.5 h / c_fast.
+/// Throws qs::Error naming the file and key when time.dt exceeds the stable step 0.5 h / c, c the
+/// scheme's wave (schemeWaveSpeed).
 /// One of the preconditions of a run that `quicksand check` and `run` share (validateRun,
 /// solver/RunPreconditions.hpp).
 void requireStableTimeStep(const CaseConfig& config);

@@ -120,6 +120,7 @@ void DoublePointSolver<D>::saveState(CheckpointData& data) const {
     data.putScalar("time", time_);
     data.putScalar("steps", static_cast<double>(steps_));
     data.putScalar("dt", dt_);
+    data.putScalar("semi_implicit", config_.time.scheme == TimeScheme::SemiImplicit ? 1 : 0);
     putSet(data, "solid", self.solid_);
     putSet(data, "liquid", self.liquid_);
     data.put("rel_speed", nodes_.relSpeed);
@@ -142,6 +143,12 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     QS_CHECK(std::abs(data.scalar("dt") - dt_) <= 1e-12 * dt_,
              "the checkpoint was written with dt = " << data.scalar("dt") << " s, the case now gives "
                                                      << dt_ << " s: grid or material data changed");
+    // a checkpoint before 2026-12-06 is the explicit scheme's
+    const bool semi = data.has("semi_implicit") && data.scalar("semi_implicit") != 0;
+    QS_CHECK(semi == (config_.time.scheme == TimeScheme::SemiImplicit),
+             "the checkpoint was written by the " << (semi ? "semi-implicit" : "explicit")
+                 << " scheme, the case now asks for time.scheme = \""
+                 << (semi ? "explicit" : "semi_implicit") << "\": resume with the scheme it was written with");
     // the solid's velocity gradient (APIC, field 9) came on 2026-12-02: an older checkpoint's
     // points start with C = 0, a PIC transfer for their first step
     getSet(data, "solid", solid_, D, SolidPoints<D>::kVelocityGradientField);

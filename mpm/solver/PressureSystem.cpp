@@ -1,0 +1,74 @@
+#include "solver/PressureSystem.hpp"
+
+#include <algorithm>
+
+namespace qs {
+
+template <int D>
+void PressureSystem::build(const Grid<D>& grid, PressureSolver solver) {
+    const Index nc = grid.numCells();
+    direct_ = solver == PressureSolver::Direct || (solver == PressureSolver::Automatic && nc <= kDirectCellLimit);
+    std::vector<Eigen::Triplet<double>> entries;
+    entries.reserve(static_cast<std::size_t>(nc) * (D == 1 ? 3 : D == 2 ? 9 : 27));
+    for (Index c = 0; c < nc; ++c) {
+        const IVec<D> cc = grid.cellCoords(c);
+        for (int k = 0; k < (D == 1 ? 3 : D == 2 ? 9 : 27); ++k) {
+            IVec<D> n;
+            bool inside = true;
+            int code = k;
+            for (int d = 0; d < D; ++d) {
+                n[d] = cc[d] + code % 3 - 1;
+                code /= 3;
+                if (n[d] < 0 || n[d] >= grid.cells(d)) inside = false;
+            }
+            if (inside) entries.emplace_back(static_cast<int>(grid.cellIndex(n)), static_cast<int>(c), 0.0);
+        }
+    }
+    A_.resize(nc, nc);
+    A_.setFromTriplets(entries.begin(), entries.end());
+    A_.makeCompressed();
+    analysed_ = false;
+    // the neighbours' places, in the order the triplets above came: within a column Eigen sorts
+    // the rows, which is the order of the offsets' codes (axis 0 fastest in both)
+    stencil_ = D == 1 ? 3 : D == 2 ? 9 : 27;
+    slots_.assign(static_cast<std::size_t>(nc) * stencil_, -1);
+    for (Index c = 0; c < nc; ++c) {
+        const IVec<D> cc = grid.cellCoords(c);
+        const int* r = rows(c);
+        for (Index k = 0; k < size(c); ++k) {
+            const IVec<D> rc = grid.cellCoords(r[k]);
+            int offset[D];
+            for (int d = 0; d < D; ++d) offset[d] = static_cast<int>(rc[d] - cc[d]);
+            slots_[c * stencil_ + offsetCode(offset, D)] = static_cast<signed char>(k);
+        }
+    }
+}
+
+bool PressureSystem::factorize() {
+    if (direct_) {
+        if (!analysed_) { ldlt_.analyzePattern(A_); analysed_ = true; }
+        ldlt_.factorize(A_);
+        return ldlt_.info() == Eigen::Success;
+    }
+    cg_.setTolerance(kTolerance);
+    cg_.compute(A_);
+    return cg_.info() == Eigen::Success;
+}
+
+bool PressureSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    if (direct_) {
+        x = ldlt_.solve(b);
+        iterations_ = 0;
+        return ldlt_.info() == Eigen::Success && x.allFinite();
+    }
+    x = cg_.solve(b);
+    iterations_ = static_cast<int>(cg_.iterations());
+    error_ = cg_.error();
+    return cg_.info() == Eigen::Success && x.allFinite();
+}
+
+template void PressureSystem::build<1>(const Grid<1>&, PressureSolver);
+template void PressureSystem::build<2>(const Grid<2>&, PressureSolver);
+template void PressureSystem::build<3>(const Grid<3>&, PressureSolver);
+
+}  // namespace qs

@@ -1,0 +1,74 @@
+#pragma once
+// PressureSystem: the semi-implicit step's linear system on the grid's cells,
+//   (S + dt^2 D B D^T) dp = b,
+// a symmetric positive definite matrix with one row per cell and the 3^D cells around it as its
+// pattern (SemiImplicitIntegrator.cpp assembles it). The pattern is the whole grid's and fixed for
+// the run: cells without water, or held at a known increment, keep their place as a row of the
+// identity, so the symbolic work (the ordering, the fill of the factor) is done once, and each step
+// writes values into the same arrays and factorises anew.
+//
+// The solvers are Eigen's (no hand-written linear algebra):
+//   - Direct: SimplicialLDLT, a sparse Cholesky factorisation with an AMD ordering;
+//   - ConjugateGradient: CG with an incomplete-Cholesky preconditioner (IncompleteCholesky).
+// docs/performance.md, "The pressure solve", measures both; PressureSolver::Automatic takes the
+// direct one up to kDirectCellLimit cells and CG beyond.
+#include <Eigen/IterativeLinearSolvers>
+#include <Eigen/SparseCholesky>
+#include <Eigen/SparseCore>
+#include <vector>
+
+#include "core/Types.hpp"
+#include "grid/Grid.hpp"
+
+namespace qs {
+
+enum class PressureSolver { Automatic, Direct, ConjugateGradient };
+
+class PressureSystem {
+public:
+    /// Cells up to which Automatic takes the direct solver.
+    static constexpr Index kDirectCellLimit = 20000;
+    /// CG's tolerance on |b - A x| / |b|.
+    static constexpr Real kTolerance = 1e-10;
+
+    /// The pattern: each cell and its in-grid neighbours across faces, edges and corners.
+    template <int D>
+    void build(const Grid<D>& grid, PressureSolver solver);
+
+    /// The values of cell c's column (its row: the matrix is symmetric), in the order of rows(c).
+    Real* values(Index c) { return A_.valuePtr() + A_.outerIndexPtr()[c]; }
+    const int* rows(Index c) const { return A_.innerIndexPtr() + A_.outerIndexPtr()[c]; }
+    Index size(Index c) const { return A_.outerIndexPtr()[c + 1] - A_.outerIndexPtr()[c]; }
+    /// Where in column c the row of the cell at offset o from c sits, o in {-1, 0, 1}^D coded as
+    /// sum_d (o_d + 1) 3^d.
+    int slot(Index c, int offsetCode) const { return slots_[c * stencil_ + offsetCode]; }
+    static int offsetCode(const int* offset, int D) {
+        int code = 0;
+        for (int d = D - 1; d >= 0; --d) code = code * 3 + offset[d] + 1;
+        return code;
+    }
+
+    /// Factorises (Direct) or preconditions (CG) the values written. False if it fails.
+    bool factorize();
+    /// x = A^-1 b with the last factorisation; false if the solver fails or does not reach its
+    /// tolerance.
+    bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
+
+    bool direct() const { return direct_; }
+    int iterations() const { return iterations_; }   ///< CG's last, 0 for Direct
+    Real error() const { return error_; }            ///< CG's last relative residual
+    Index cells() const { return static_cast<Index>(A_.rows()); }
+
+private:
+    using Matrix = Eigen::SparseMatrix<double>;  // column-major: Eigen's sparse solvers' own layout
+    Matrix A_;
+    Eigen::SimplicialLDLT<Matrix> ldlt_;
+    Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg_;
+    std::vector<signed char> slots_;  ///< [cell][3^D] place of each neighbour in the cell's column, -1 outside
+    int stencil_ = 0;
+    bool direct_ = true, analysed_ = false;
+    int iterations_ = 0;
+    Real error_ = 0;
+};
+
+}  // namespace qs

@@ -1,0 +1,300 @@
+// The semi-implicit step: predictor, the cells' pressure increment, corrector
+// (SemiImplicitIntegrator.hpp says why each piece is as it is).
+#include "solver/SemiImplicitIntegrator.hpp"
+
+#include <cmath>
+#include <sstream>
+
+#include "core/Error.hpp"
+#include "core/ForAll.hpp"
+#include "physics/Cavitation.hpp"
+
+namespace qs {
+
+namespace {
+/// Active-set passes a step may take before it keeps what it has: updatePressure presses the
+/// water from the last velocities, so the state stays consistent either way.
+constexpr int kMaxSolves = 8;
+/// Pa: how far past its bound a cell's pressure may come out before the active set changes.
+constexpr Real kBoundTolerance = 1e-6;
+}  // namespace
+
+template <int D>
+SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context, PressureSolver solver)
+    : ctx_(context) {
+    const Index nn = ctx_.grid.numNodes(), nc = ctx_.grid.numCells();
+    for (auto* a : {&predS_, &predL_, &incL_, &rS_, &rL_, &force_}) a->assign(nn * D, 0.0);
+    held_.assign(nc, 0);
+    gateWeight_.assign(ctx_.masks.gateNodes.size(), 0.0);
+    for (auto* v : {&rhs_, &dp_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
+    system_.build(ctx_.grid, solver);
+}
+
+template <int D>
+Real SemiImplicitIntegrator<D>::limit(Index c) const {
+    return waterLimit(ctx_.filling.openToAir[c], ctx_.config.liquid.cavitationPressure);
+}
+
+template <int D>
+Real SemiImplicitIntegrator<D>::solveVelocities(const StepInputs& in, Real time) {
+    const NodeFields<D>& nodes = ctx_.nodes;
+    solveNodes(ctx_, in);  // the predictor: the explicit step with the pressure of the step's start
+    predS_ = nodes.velS;   // same sizes: copies, no allocation
+    predL_ = nodes.velL;
+    incL_ = nodes.velLIncrement;
+    nodeResponse(in);
+    gateResponse(in);
+
+    // the cells held at the step's start: no water (their pressure stays 0), or at their bound
+    const CellWater<D>& water = ctx_.water;
+    forAll(ctx_.grid.numCells(), [&](Index c) {
+        const bool dry = !(water.weight[c] > 0);
+        const bool atBound = !dry && water.pressure[c] <= limit(c) + kBoundTolerance;
+        held_[c] = dry || atBound;
+        dp_[c] = atBound ? limit(c) - water.pressure[c] : 0.0;
+    });
+    solves_ = 0;
+    do {
+        assemble(in.dt);
+        solve(in.dt, time);
+        correct(in.dt);
+        ++solves_;
+    } while (updateHeldCells(in.dt) && solves_ < kMaxSolves);
+    return gateFlux(ctx_);
+}
+
+// Each node component's response to a unit impulse dt G = 1 on the mixture, shared as (1 - n)
+// on the solid and n on the liquid: the node solve with those as its drag-free predictors and
+// nothing prescribed (solveComponent is linear in them).
+template <int D>
+void SemiImplicitIntegrator<D>::nodeResponse(const StepInputs& in) {
+    const NodeFields<D>& nodes = ctx_.nodes;
+    forAll(ctx_.grid.numNodes(), [&](Index i) {
+        const Real n = nodes.porosity[i], mS = nodes.massS[i], mL = nodes.massL[i];
+        for (int a = 0; a < D; ++a) {
+            NodeComponent component = nodeComponent(ctx_, in, i, a);
+            component.heldLiquidVelocity = 0;
+            const PhaseVelocities r =
+                solveComponent(component, in.dt, mS > 0 ? (1 - n) / mS : 0.0, mL > 0 ? n / mL : 0.0);
+            rS_[i * D + a] = r.solid;
+            rL_[i * D + a] = r.liquid;
+        }
+    });
+}
+
+// A uniform gate moves its wet nodes' water at one vertical velocity, from the row's momentum
+// (uniformGateVelocity): an impulse G_j on node j's liquid moves all of them by
+// dt sum_j M_L,j r_L,j G_j / (sum M_L + dt R A_wet^2), and their flux by n_i times that. In the
+// cells' system this is the rank-one term gamma a_L a_R^T, gamma = dt^2 / (sum M_L + dt R A_wet^2),
+//   a_L,c = V_c sum_i n_i w_c,i,z,   a_R,c = V_c sum_j M_L,j r_L,j w_c,j,z
+// over the cell's wet gate nodes; the node's own vertical response leaves B.
+template <int D>
+void SemiImplicitIntegrator<D>::gateResponse(const StepInputs& in) {
+    gateGamma_ = 0;
+    if (!in.gate.uniform) return;
+    const NodeFields<D>& nodes = ctx_.nodes;
+    const Grid<D>& grid = ctx_.grid;
+    const Index gateRow = grid.nodeStride(D - 1);  // nodes below it are the gate's
+    Real mass = 0, wet = 0;
+    for (Index i : ctx_.masks.gateNodes)
+        if (nodes.massL[i] > 0) {
+            mass += nodes.massL[i];
+            wet += nodeFootprint(grid, i);
+        }
+    if (!(mass > 0)) return;
+    gateDenominator_ = mass + in.dt * in.gate.resistance * wet * wet;
+    gateGamma_ = in.dt * in.dt / gateDenominator_;
+    gateLeft_.setZero();
+    gateRight_.setZero();
+    for (Index c = 0; c < grid.cellStride(D - 1); ++c) {  // the bottom row of cells
+        const Real V = ctx_.water.weight[c];
+        grid.forEachNodeOfCell(c, [&](Index i, int corner) {
+            if (i >= gateRow || !(nodes.massL[i] > 0)) return;
+            const Real w = grid.divergenceWeight(c, corner, D - 1);
+            gateLeft_[c] += V * nodes.porosity[i] * w;
+            gateRight_[c] += V * nodes.massL[i] * rL_[i * D + D - 1] * w;
+        });
+    }
+    const auto& gate = ctx_.masks.gateNodes;
+    for (std::size_t j = 0; j < gate.size(); ++j) {
+        const Index k = gate[j] * D + D - 1;
+        gateWeight_[j] = nodes.massL[gate[j]] > 0 ? nodes.massL[gate[j]] * rL_[k] : 0.0;  // M_L,j r_L,j
+        if (nodes.massL[gate[j]] > 0) rL_[k] = 0;
+    }
+}
+
+// Column c of (S + dt^2 D B D^T), and b_c = -dt (D Phi*)_c less what the held cells' known
+// increments contribute. Each column is written by its own cell, so the loop runs in parallel
+// and the sums do not depend on the threads; the entry (c, c') sums over the shared nodes in
+// ascending order in both columns, so the matrix is symmetric to the bit.
+template <int D>
+void SemiImplicitIntegrator<D>::assemble(Real dt) {
+    const Grid<D>& grid = ctx_.grid;
+    const CellWater<D>& water = ctx_.water;
+    const NodeFields<D>& nodes = ctx_.nodes;
+    const Real KL = ctx_.config.liquid.bulkModulus, dt2 = dt * dt;
+    // the rank-one gate term's share from held cells, a_R . dp over them
+    Real heldGate = 0;
+    if (gateGamma_ > 0)
+        for (Index c = 0; c < grid.cellStride(D - 1); ++c)
+            if (held_[c]) heldGate += gateRight_[c] * dp_[c];
+    forAll(grid.numCells(), [&](Index c) {
+        Real* value = system_.values(c);
+        for (Index k = 0; k < system_.size(c); ++k) value[k] = 0;
+        const int centre[D] = {};
+        const int diagonal = system_.slot(c, PressureSystem::offsetCode(centre, D));
+        if (held_[c]) {
+            value[diagonal] = 1;
+            rhs_[c] = dp_[c];
+            return;
+        }
+        const Real V = water.weight[c];
+        Real divergence = 0, heldSum = 0;
+        grid.forEachNodeOfCell(c, [&](Index i, int corner) {
+            const Real n = nodes.porosity[i];
+            for (int a = 0; a < D; ++a) {
+                const Index k = i * D + a;
+                const Real Dc = V * grid.divergenceWeight(c, corner, a);
+                divergence += Dc * ((1 - n) * predS_[k] + n * predL_[k]);
+                const Real beta = (1 - n) * rS_[k] + n * rL_[k];
+                if (beta == 0) continue;
+                grid.forEachCellOfNode(i, [&](Index c2, int corner2) {
+                    if (!(water.weight[c2] > 0)) return;  // a dry cell: no pressure, no force
+                    const Real coupling = beta * (Dc * (water.weight[c2] * grid.divergenceWeight(c2, corner2, a)));
+                    if (held_[c2]) { heldSum += coupling * dp_[c2]; return; }
+                    int offset[D];
+                    for (int d = 0; d < D; ++d) offset[d] = ((corner >> d) & 1) - ((corner2 >> d) & 1);
+                    value[system_.slot(c, PressureSystem::offsetCode(offset, D))] += coupling;
+                });
+            }
+        });
+        for (Index k = 0; k < system_.size(c); ++k) value[k] *= dt2;
+        // the water's storage, S_c = V_c n_c / K_L; a cavity first takes up a compression:
+        // S_c dp_c + dt (D Phi)_c = -V_c n_c cavity_c (physics/Cavitation.hpp)
+        value[diagonal] += V * water.porosity[c] / KL;
+        rhs_[c] = -dt * divergence - dt2 * heldSum - V * water.porosity[c] * water.cavity[c] -
+                  gateGamma_ * gateLeft_[c] * heldGate;
+    });
+}
+
+template <int D>
+void SemiImplicitIntegrator<D>::solve(Real dt, Real time) {
+    auto fail = [&](const std::string& what) {
+        std::ostringstream s;
+        s << "numerical failure at t = " << time << " s: the semi-implicit step's pressure solve "
+          << what << " (" << system_.cells() << " cells, " << (system_.direct() ? "sparse Cholesky" : "CG")
+          << ", dt = " << dt << " s); a smaller time.courant, or time.scheme = \"explicit\", may get past it";
+        throw Error(s.str());
+    };
+    if (!system_.factorize()) fail("could not factorise the matrix (not positive definite)");
+    if (!system_.solve(rhs_, dp_)) fail("did not converge");
+    if (gateGamma_ > 0) {
+        // Sherman-Morrison: (A + gamma a_L a_R^T)^-1 b = x - gamma (a_R . x) / (1 + gamma a_R . y) y, A y = a_L
+        Eigen::VectorXd& left = gateSolve_;
+        left = gateLeft_;
+        for (Index c = 0; c < ctx_.grid.cellStride(D - 1); ++c)
+            if (held_[c]) left[c] = 0;
+        Eigen::VectorXd& y = rhs_;  // b is spent: its room takes y
+        if (!system_.solve(left, y)) fail("did not converge (the gate's term)");
+        Real ax = 0, ay = 0;
+        for (Index c = 0; c < ctx_.grid.cellStride(D - 1); ++c)
+            if (!held_[c]) { ax += gateRight_[c] * dp_[c]; ay += gateRight_[c] * y[c]; }
+        dp_ -= (gateGamma_ * ax / (1 + gateGamma_ * ay)) * y;
+    }
+    for (Index c = 0; c < ctx_.grid.numCells(); ++c)
+        if (!std::isfinite(dp_[c])) {
+            std::ostringstream what;
+            what << "gave a non-finite pressure in cell " << c << " (centre at elevation "
+                 << ctx_.grid.cellCentre(ctx_.grid.cellCoords(c)[D - 1]) << " m)";
+            fail(what.str());
+        }
+}
+
+// v = v* + dt r G, G = D^T dp the increment's force on the mixture at each node (the pressure
+// force of computeForces with dp for p).
+template <int D>
+void SemiImplicitIntegrator<D>::correct(Real dt) {
+    const Grid<D>& grid = ctx_.grid;
+    const CellWater<D>& water = ctx_.water;
+    NodeFields<D>& nodes = ctx_.nodes;
+    forAll(grid.numNodes(), [&](Index i) {
+        Real G[D] = {};
+        grid.forEachCellOfNode(i, [&](Index c, int corner) {
+            const Real pV = dp_[c] * water.weight[c];
+            if (pV == 0) return;
+            for (int a = 0; a < D; ++a) G[a] += pV * grid.divergenceWeight(c, corner, a);
+        });
+        Real w2 = 0;
+        for (int a = 0; a < D; ++a) {
+            const Index k = i * D + a;
+            force_[k] = G[a];
+            nodes.velS[k] = predS_[k] + dt * rS_[k] * G[a];
+            const Real dvL = dt * rL_[k] * G[a];
+            nodes.velL[k] = predL_[k] + dvL;
+            nodes.velLIncrement[k] = incL_[k] + dvL;
+            w2 += (nodes.velL[k] - nodes.velS[k]) * (nodes.velL[k] - nodes.velS[k]);
+        }
+        nodes.relSpeed[i] = (nodes.massS[i] > 0 && nodes.massL[i] > 0) ? std::sqrt(w2) : 0.0;
+    });
+    if (!(gateGamma_ > 0)) return;
+    // the uniform gate: one velocity increment for its wet nodes, from the row's impulse
+    const auto& gate = ctx_.masks.gateNodes;
+    Real impulse = 0;
+    for (std::size_t j = 0; j < gate.size(); ++j)
+        if (nodes.massL[gate[j]] > 0) impulse += gateWeight_[j] * force_[gate[j] * D + D - 1];
+    const Real dv = dt * impulse / gateDenominator_;
+    for (Index i : gate)
+        if (nodes.massL[i] > 0) {
+            const Index k = i * D + D - 1;
+            nodes.velL[k] = predL_[k] + dv;
+            nodes.velLIncrement[k] = incL_[k] + dv;
+        }
+}
+
+/// The cell's mean divergence of the mixture's flux, as updatePressure takes it.
+template <int D>
+Real SemiImplicitIntegrator<D>::cellDivergence(Index c) const {
+    const NodeFields<D>& nodes = ctx_.nodes;
+    Real div = 0;
+    ctx_.grid.forEachNodeOfCell(c, [&](Index i, int corner) {
+        const Real n = nodes.porosity[i];
+        for (int a = 0; a < D; ++a)
+            div += ctx_.grid.divergenceWeight(c, corner, a) * ((1 - n) * nodes.velS[i * D + a] + n * nodes.velL[i * D + a]);
+    });
+    return div;
+}
+
+// The active set: a free cell the solve took below its bound is held at it; a held cell whose
+// water the velocities would press above its bound (its cavity closed first) is let go. Returns
+// whether the set changed. Serial: a few thousand cells' comparisons, in a fixed order.
+template <int D>
+bool SemiImplicitIntegrator<D>::updateHeldCells(Real dt) {
+    const CellWater<D>& water = ctx_.water;
+    const Real KL = ctx_.config.liquid.bulkModulus;
+    bool changed = false;
+    for (Index c = 0; c < ctx_.grid.numCells(); ++c) {
+        if (!(water.weight[c] > 0)) continue;
+        const Real bound = limit(c), p = water.pressure[c];
+        if (!held_[c]) {
+            if (p + dp_[c] < bound - kBoundTolerance) {
+                held_[c] = 1;
+                dp_[c] = bound - p;
+                changed = true;
+            }
+            continue;
+        }
+        const CavitatingWater pressed =
+            pressWater({p, water.cavity[c]}, -KL / water.porosity[c] * dt * cellDivergence(c), KL, bound);
+        if (pressed.pressure > bound + kBoundTolerance) {
+            held_[c] = 0;
+            changed = true;
+        }
+    }
+    return changed;
+}
+
+template class SemiImplicitIntegrator<1>;
+template class SemiImplicitIntegrator<2>;
+template class SemiImplicitIntegrator<3>;
+
+}  // namespace qs

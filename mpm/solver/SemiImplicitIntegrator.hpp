@@ -1,0 +1,73 @@
+#pragma once
+// The semi-implicit scheme (time.scheme = "semi_implicit"): an incremental pressure projection
+// for the double-point step (physics.md section 2; docs/semi-implicit-design.md).
+//
+//  1 Predictor: the explicit node solve (NodeVelocities.hpp) with the forces of the step's start,
+//    the pore pressure p^n among them: v*_S, v*_L and the mixture's flux Phi* = (1-n) v*_S + n v*_L.
+//  2 Each node component's response to a pressure force: a force G on the mixture, shared as
+//    (1-n) G on the solid and n G on the liquid, moves the velocities by dt r_S G and dt r_L G,
+//    (r_S, r_L) from the same node solve (solveComponent is linear), and the flux by
+//    dt beta G, beta = (1-n) r_S + n r_L: the drag, the masks and the tube's loss are in it.
+//  3 The pressure increment dp of the cells that keeps each cell's water balance with the
+//    velocities it makes, S_c dp_c + dt (D Phi)_c = 0, S_c = V_c n_c / K_L:
+//      (S + dt^2 D B D^T) dp = -dt D Phi*,
+//    D the cells' divergence (the discrete one of updatePressure, V_c times it) and D^T the nodes'
+//    pressure force (computeForces), B = diag(beta). Dropping the dt^2 term gives the explicit
+//    update back. In 2D and 3D a pressure gate's water moves at one velocity: a rank-one term,
+//    solved by Sherman-Morrison (two solves with one factorisation).
+//  4 Corrector: v = v* + dt r D^T dp. updatePressure then takes the cell's water from these
+//    velocities as in the explicit scheme, which gives p^n + dp where the system held, and keeps
+//    cavities and the water's volume consistent everywhere.
+// The water's lowest pressure (cavitation, no suction under the air) is a bound p >= p_lim: a
+// cell at its bound at the step's start is held there, a cell the solve takes below it is held
+// at it, and a held cell whose water the velocities would press above its bound is let go; a few
+// solves (an active set) settle which cells are held.
+//
+// What bounds the step: the skeleton's stress, explicit, sqrt(E_oed / ((1 - n) rho_s)); the
+// water's compression and the drag are implicit.
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "solver/NodeVelocities.hpp"
+#include "solver/PressureSystem.hpp"
+
+namespace qs {
+
+template <int D>
+class SemiImplicitIntegrator final : public TimeIntegrator<D> {
+public:
+    explicit SemiImplicitIntegrator(const StepContext<D>& context, PressureSolver solver = PressureSolver::Automatic);
+    TimeScheme scheme() const override { return TimeScheme::SemiImplicit; }
+    Real solveVelocities(const StepInputs& in, Real time) override;
+
+    /// The last step's solves (active-set passes), for progress output and benchmarks.
+    int lastSolves() const { return solves_; }
+    int lastIterations() const { return system_.iterations(); }
+    bool directSolver() const { return system_.direct(); }
+
+private:
+    void nodeResponse(const StepInputs& in);
+    void gateResponse(const StepInputs& in);
+    void assemble(Real dt);
+    void solve(Real dt, Real time);
+    void correct(Real dt);
+    bool updateHeldCells(Real dt);
+    Real cellDivergence(Index c) const;
+    Real limit(Index c) const;
+
+    StepContext<D> ctx_;
+    PressureSystem system_;
+    std::vector<Real> predS_, predL_;  ///< [D] m/s, the predictor's velocities
+    std::vector<Real> incL_;           ///< [D] m/s, the predictor's FLIP increment
+    std::vector<Real> rS_, rL_;        ///< [D] s/kg, the response to a pressure force
+    std::vector<Real> force_;          ///< [D] N, D^T dp: the increment's force on the mixture
+    std::vector<Real> gateWeight_;     ///< per gate node, M_L r_L: its share of the uniform gate's impulse
+    std::vector<char> held_;           ///< per cell: its increment is known (no water, or at its bound)
+    Eigen::VectorXd rhs_, dp_, gateSolve_, gateLeft_, gateRight_;
+    Real gateGamma_ = 0;               ///< dt^2 / (sum M_L + dt R A_wet^2), 0 without a uniform gate
+    Real gateDenominator_ = 0;
+    int solves_ = 0;
+};
+
+}  // namespace qs
