@@ -144,10 +144,17 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
     }
     // the step the solver takes (solver/RunSize.hpp): the same c_fast as the closed forms above,
     // from the materials' constitutive models
-    const double cMax = fastestWaveSpeed(config);
-    const double dtStable = config.time.courant * h / cMax;
-    out << "time step: c_fast = " << cMax << " m/s, dt = courant h / c_fast = " << dtStable << " s ("
+    const bool semi = config.time.scheme == TimeScheme::SemiImplicit;
+    const double cFast = fastestWaveSpeed(config), cSkeleton = skeletonWaveSpeed(config);
+    const double c = schemeWaveSpeed(config);
+    const double dtStable = config.time.courant * h / c;
+    out << "time step (" << (semi ? "semi-implicit" : "explicit") << " scheme): c_fast = " << cFast
+        << " m/s, c_skeleton = " << cSkeleton << " m/s; dt = courant h / " << (semi ? "c_skeleton" : "c_fast")
+        << " = " << dtStable << " s ("
         << stepCount(config.time.end / (config.time.dt ? *config.time.dt : dtStable)) << " steps to t = " << config.time.end << " s)\n";
+    if (!semi && cFast > 2 * cSkeleton)
+        out << "  time.scheme = \"semi_implicit\" would step " << cFast / cSkeleton
+            << " times further (its step follows the skeleton's wave, not the water's)\n";
     printRunSize(config, out);
     out << "points: " << config.points.solidPerCell << " solid and " << config.points.liquidPerCell
         << " liquid per sand cell and axis, " << freeWaterPointsPerCell(config)

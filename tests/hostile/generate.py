@@ -132,6 +132,10 @@ CASES = {
     "porosity_field_in_a_fluidised_start": (sub("porosity = 0.38", "porosity = 0.45") + '\n[initial]\nstate = "fluidised"\n\n[initial.porosity_field]\nstandard_deviation = 0.01\ncorrelation_length = 0.02\n',
                                             "check", "-", ["initial.porosity_field", "fluidised"]),
     "fluidised_below_max_porosity": (BASE + '\n[initial]\nstate = "fluidised"\nstress = "k0"\n', "check", "-", ["initial.stress"]),
+    "time_scheme_misspelt": (sub("end = 0.5", 'end = 0.5\nscheme = "semi-implicit"'), "check|run", "-",
+                             ["time.scheme", "semi-implicit", "semi_implicit"]),
+    "checkpoint_of_other_scheme": (BASE, "run --resume --set time.scheme='\"semi_implicit\"'", "scheme_checkpoint",
+                                   ["checkpoint", "explicit", "time.scheme"]),
     "dt_beyond_stable": (BASE.replace("end = 0.5", "end = 0.5\ndt = 1.0e-3"), "check|run", "-", ["time.dt", "stable step"]),
     # unit mistakes
     "viscosity_in_kpa_s": (sub("viscosity = 8.91e-4", "viscosity = 8.91e-7"), "check", "-", ["liquid.viscosity", "kPa s"]),

@@ -4,7 +4,9 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdlib>
 #include <functional>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -23,8 +25,22 @@ struct CaseRun {
     std::vector<PipeSurvey> pipes;               ///< 2D/3D: the pipes found in them
 };
 
+/// The time scheme the suite runs with: each case's own, unless the environment's
+/// QUICKSAND_TEST_SCHEME names one ("explicit" or "semi_implicit"). ctest runs the suite once
+/// per scheme (tests/CMakeLists.txt): every problem holds for both with the same tolerances.
+inline void applyTestScheme(CaseConfig& c) {
+    const char* scheme = std::getenv("QUICKSAND_TEST_SCHEME");
+    if (!scheme || !*scheme) return;
+    const std::string s = scheme;
+    if (s == "semi_implicit") c.time.scheme = TimeScheme::SemiImplicit;
+    else if (s == "explicit") c.time.scheme = TimeScheme::Explicit;
+    else throw std::runtime_error("QUICKSAND_TEST_SCHEME = '" + s + "': expected explicit or semi_implicit");
+}
+
 inline CaseConfig loadVerificationCase(const std::string& name) {
-    return loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/" + name);
+    CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/" + name);
+    applyTestScheme(c);
+    return c;
 }
 
 /// Runs the case; `edit` may change the loaded config first (e.g. break the physics on purpose).

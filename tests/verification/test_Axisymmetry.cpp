@@ -162,6 +162,9 @@ TEST(Axisymmetry, PoreWaterBreathingModeRingsAtTheBesselFrequency) {
     // surface, with the water's share of the area n in the sand and 1 in the chamber; its first
     // mode has tan(kz L_chamber) tan(kz L_sand) = n. Radially J0(kr r), kr = j'_1 / R.
     CaseConfig c = breathingColumn();
+    if (c.time.scheme == TimeScheme::SemiImplicit)
+        GTEST_SKIP() << "the semi-implicit scheme steps past the water's wave, whose mode this is (its "
+                        "undrained response: CompressionWave.SemiImplicitUndrainedLoadIsCarriedByTheWaterAtOnce)";
     c.initial.rigidSkeleton = true;
     const double cw = std::sqrt(c.liquid.bulkModulus / c.liquid.density);
     const double L1 = c.filterLevel(), L2 = c.sandTop() - L1, n = c.materials.front().porosity;

@@ -59,6 +59,9 @@ std::size_t outputAt(const CaseRun& run, double t) {
 }  // namespace
 
 TEST(CompressionWave, UndrainedWaveTravelsAtTheUndrainedSpeed) {
+    if (loadVerificationCase("undrained_wave").time.scheme == TimeScheme::SemiImplicit)
+        GTEST_SKIP() << "the semi-implicit scheme steps past the water's wave (2.4 cells per step here): "
+                        "SemiImplicitUndrainedLoadIsCarriedByTheWaterAtOnce checks its undrained response";
     const CaseRun run = runVerificationCase("undrained_wave");
     const auto& c = run.config;
     const auto& sand = c.material("sand");
@@ -114,11 +117,62 @@ TEST(CompressionWave, ZeroDragFastAndSlowWavesTravelAtBiotsSpeeds) {
     ASSERT_GT(ts2, 0);
     ASSERT_LT(ts2, (2 * (top - c.filterLevel()) - 0.15) / waves.fast);
     const double fast = 0.4 / (tf2 - tf1), slow = 0.1 / (ts2 - ts1);
-    EXPECT_NEAR(fast, waves.fast, 0.05 * waves.fast);
+    // the semi-implicit scheme steps past the fast wave (its step follows the skeleton's wave,
+    // 6.5 times slower): only the slow wave, which its step resolves, is its to follow
+    const bool semi = c.time.scheme == TimeScheme::SemiImplicit;
+    if (!semi) { EXPECT_NEAR(fast, waves.fast, 0.05 * waves.fast); }
     EXPECT_NEAR(slow, waves.slow, 0.05 * waves.slow);
     // guards near what is achieved
-    EXPECT_NEAR(fast, waves.fast, 0.03 * waves.fast);
+    if (!semi) { EXPECT_NEAR(fast, waves.fast, 0.03 * waves.fast); }
     EXPECT_NEAR(slow, waves.slow, 0.02 * waves.slow);
     std::printf("zero-drag waves: fast %.1f m/s vs %.1f (%+.2f %%), slow %.2f m/s vs %.2f (%+.2f %%)\n", fast,
                 waves.fast, 100 * (fast / waves.fast - 1), slow, waves.slow, 100 * (slow / waves.slow - 1));
+}
+
+// Problem 5 for the semi-implicit scheme, whose step passes over the water's wave at the grid's
+// scale: the undrained step response with real water (K_L = 2.2 GPa, the scheme's default use).
+// A step load on the nearly impermeable column is carried by the water, u0 = q m_v / (m_v + n/K_L)
+// = 0.99977 q in every row, the rest by the skeleton. The load arrives as a water hammer: the
+// column rings at its quarter-wave period 4 H / c_u = 0.44 ms (c_u = 1 700 m/s), its rarefactions
+// open cavities at p = 0 (gravity is off), and the step's numerical damping (the pressure is
+// implicit: backward Euler for the water's wave, 16 steps per period) settles it within ten
+// periods. From then on, over 20 ms (700 steps), every row holds u0. (The same column with the
+// soft water, c_u = 168 m/s, is resolved by the step and rings on, as the explicit scheme's does.)
+TEST(CompressionWave, SemiImplicitUndrainedLoadIsCarriedByTheWater) {
+    const CaseRun run = runVerificationCase("undrained_wave", [&](CaseConfig& c) {
+        c.time.scheme = TimeScheme::SemiImplicit;
+        c.liquid.bulkModulus = 2.2e9;
+        c.time.end = 0.02;
+        c.time.outputInterval = 2e-4;
+    });
+    const auto& c = run.config;
+    const auto& sand = c.material("sand");
+    const double Eoed = closed::oedometricModulus(sand.youngsModulus, sand.poissonRatio);
+    const double q = c.loads.surcharge;
+    const double u0 = q * closed::undrainedPressureRatio(Eoed, sand.porosity, c.liquid.bulkModulus);
+    ASSERT_NEAR(u0 / q, 0.99977, 1e-5);
+    const double cu = closed::undrainedWaveSpeed(Eoed, c.liquid.bulkModulus, sand.porosity, sand.grainDensity,
+                                                 c.liquid.density);
+    const double settled = 10 * 4 * (c.sandTop() - c.filterLevel()) / cu;
+    double worstWater = 0, worstTotal = 0;
+    int compared = 0;
+    for (std::size_t k = 0; k < run.series.size(); ++k) {
+        if (run.series[k].time < settled) continue;
+        for (const auto& r : sandRows(run.profiles[k])) {
+            worstWater = std::max(worstWater, std::abs(r.porePressure - u0) / q);
+            // the total stress, water and skeleton, carries the load
+            worstTotal = std::max(worstTotal, std::abs(r.porePressure - r.verticalStress - q) / q);
+            ++compared;
+        }
+    }
+    EXPECT_GT(compared, 70 * 90);
+    EXPECT_LT(worstWater, 0.05);
+    EXPECT_LT(worstTotal, 0.05);
+    // guards near what is achieved: 1.4 % (the cavities the hammer's rarefactions opened leave
+    // some rows' skeleton carrying a little more: 2 Pa at mid-depth, 14 Pa at worst) and 0.05 %
+    EXPECT_LT(worstWater, 0.02);
+    EXPECT_LT(worstTotal, 0.001);
+    std::printf("semi-implicit undrained step, real water (u0 = %.5f q, dt = %.3g s, from %.2f ms on): "
+                "largest |u - u0| %.2e q, |u - sigma'_zz - q| %.2e q over %d row-outputs\n",
+                u0 / q, run.summary.dt, 1e3 * settled, worstWater, worstTotal, compared);
 }

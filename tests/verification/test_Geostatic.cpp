@@ -111,6 +111,11 @@ TEST(Geostatic, ASkeletonCompactedPastItsDensestPackingStaysAtIt) {
         c.loads.surchargeRampTime = 0.5;
         c.time.end = 3.0;
         c.time.outputInterval = 0.05;
+        // The semi-implicit step follows this skeleton's wave, 1.3 m/s (dt = 2.9 ms): a skeleton
+        // locked at n_min is stiffer than its E says, and at courant 0.4 the water squeezed past
+        // the locked grains outran a cell per step at 1.45 s. At 0.2 it holds (docs/case-format.md,
+        // choosing the time scheme).
+        if (c.time.scheme == TimeScheme::SemiImplicit) c.time.courant = 0.2;
     });
     const double nMin = run.config.material("sand").minPorosity;
     double least = 1;

@@ -30,6 +30,11 @@ namespace {
 /// The 2D geostatic column, four cells across, with uGIMP shape functions.
 CaseConfig gimpColumn() {
     CaseConfig c = loadVerificationCase("geostatic");
+    // The transfers at the walls, which both schemes share, seen in one step: the explicit one,
+    // where a step moves the points with the grid away from the held rows. The semi-implicit
+    // step's pressure carries the filter's hold on the sand through the whole column within the
+    // step (the water's incompressibility, felt at once), so nothing translates freely there.
+    c.time.scheme = TimeScheme::Explicit;
     inGeometry(c, Geometry::Plane2D, 4);
     c.grid.shapeFunctions = ShapeFunctionKind::Gimp;
     return c;
