@@ -131,6 +131,7 @@ public:
     /// The wave speed the time step follows (m/s): c_fast (explicit) or c_skeleton (semi-implicit).
     Real waveSpeed() const { return waveSpeed_; }
     TimeScheme scheme() const { return integrator_->scheme(); }
+    IntegratorStats integratorStats() const { return integrator_->stats(); }
     /// The share of its slope mass below which a node is starved: C^2 / 2, C = dt c / h
     /// (GridToPoints.cpp)
     Real starvedShare() const { const Real c = dt_ * waveSpeed_ / grid_.h(); return 0.5 * c * c; }

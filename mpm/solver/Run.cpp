@@ -386,6 +386,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - wall0).count();
     r.pointUpdatesPerSecond = r.wallSeconds > 0 ? pointSteps / r.wallSeconds : 0;
     r.dt = solver.dt();
+    r.integrator = solver.integratorStats();
     r.outputDirectory = outDir.string();
     if (windowAdvancer) {
         r.coupling = windowAdvancer->stats();
@@ -396,6 +397,17 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
                     r.steps, formatSeconds(r.wallSeconds).c_str(), r.pointUpdatesPerSecond,
                     options.writeFiles ? outDir.string().c_str() : "(memory)");
         if (!r.couplingSummary.empty()) std::printf("quicksand: %s\n", r.couplingSummary.c_str());
+        const IntegratorStats& i = r.integrator;
+        if (i.steps > 0) {
+            std::printf("quicksand: semi-implicit step, dt = %.3g s: the pressure solve took %.1f %% of the wall time, "
+                        "%.3f solves per step (%s%s)",
+                        r.dt, r.wallSeconds > 0 ? 100 * i.seconds / r.wallSeconds : 0.0,
+                        double(i.solves) / double(i.steps), i.solver, i.iterations > 0 ? ", " : "");
+            if (i.iterations > 0) std::printf("%.1f iterations per solve", double(i.iterations) / double(i.solves));
+            std::printf(")\n");
+            if (i.cappedSteps > 0)
+                std::printf("quicksand: %ld steps ended their active set (the water's bound) unsettled\n", i.cappedSteps);
+        }
     }
     return r;
 }

@@ -46,6 +46,7 @@ struct RunSummary {
     double pointUpdatesPerSecond = 0;  ///< (solid + liquid points) x steps / wall time
     double dt = 0;
     std::string outputDirectory;
+    IntegratorStats integrator;   ///< the time scheme's own work (semi-implicit: the pressure solve)
     CouplingStats coupling;       ///< windowed models only
     std::string couplingSummary;  ///< one line: windows, iterations, share of the model's time
 };

@@ -2,6 +2,7 @@
 // (SemiImplicitIntegrator.hpp says why each piece is as it is).
 #include "solver/SemiImplicitIntegrator.hpp"
 
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -28,6 +29,8 @@ SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context,
     gateWeight_.assign(ctx_.masks.gateNodes.size(), 0.0);
     for (auto* v : {&rhs_, &dp_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
     system_.build(ctx_.grid, solver);
+    stats_.solver = system_.direct() ? "sparse Cholesky (Eigen SimplicialLDLT)"
+                                     : "conjugate gradients, incomplete Cholesky (Eigen)";
 }
 
 template <int D>
@@ -39,6 +42,7 @@ template <int D>
 Real SemiImplicitIntegrator<D>::solveVelocities(const StepInputs& in, Real time) {
     const NodeFields<D>& nodes = ctx_.nodes;
     solveNodes(ctx_, in);  // the predictor: the explicit step with the pressure of the step's start
+    const auto start = std::chrono::steady_clock::now();
     predS_ = nodes.velS;   // same sizes: copies, no allocation
     predL_ = nodes.velL;
     incL_ = nodes.velLIncrement;
@@ -60,6 +64,10 @@ Real SemiImplicitIntegrator<D>::solveVelocities(const StepInputs& in, Real time)
         correct(in.dt);
         ++solves_;
     } while (updateHeldCells(in.dt) && solves_ < kMaxSolves);
+    stats_.steps += 1;
+    stats_.solves += solves_;
+    if (solves_ == kMaxSolves) stats_.cappedSteps += 1;
+    stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return gateFlux(ctx_);
 }
 
@@ -188,6 +196,7 @@ void SemiImplicitIntegrator<D>::solve(Real dt, Real time) {
     };
     if (!system_.factorize()) fail("could not factorise the matrix (not positive definite)");
     if (!system_.solve(rhs_, dp_)) fail("did not converge");
+    stats_.iterations += system_.iterations();
     if (gateGamma_ > 0) {
         // Sherman-Morrison: (A + gamma a_L a_R^T)^-1 b = x - gamma (a_R . x) / (1 + gamma a_R . y) y, A y = a_L
         Eigen::VectorXd& left = gateSolve_;

@@ -40,11 +40,7 @@ public:
     explicit SemiImplicitIntegrator(const StepContext<D>& context, PressureSolver solver = PressureSolver::Automatic);
     TimeScheme scheme() const override { return TimeScheme::SemiImplicit; }
     Real solveVelocities(const StepInputs& in, Real time) override;
-
-    /// The last step's solves (active-set passes), for progress output and benchmarks.
-    int lastSolves() const { return solves_; }
-    int lastIterations() const { return system_.iterations(); }
-    bool directSolver() const { return system_.direct(); }
+    IntegratorStats stats() const override { return stats_; }
 
 private:
     void nodeResponse(const StepInputs& in);
@@ -67,7 +63,8 @@ private:
     Eigen::VectorXd rhs_, dp_, gateSolve_, gateLeft_, gateRight_;
     Real gateGamma_ = 0;               ///< dt^2 / (sum M_L + dt R A_wet^2), 0 without a uniform gate
     Real gateDenominator_ = 0;
-    int solves_ = 0;
+    int solves_ = 0;                   ///< this step's
+    IntegratorStats stats_;
 };
 
 }  // namespace qs

@@ -55,6 +55,17 @@ struct StepContext {
     NodeFields<D>& nodes;
 };
 
+/// What a scheme's own work cost over the run (the semi-implicit pressure solve; zero for the
+/// explicit scheme, whose node solve is the step's phase 4 and nothing more).
+struct IntegratorStats {
+    long steps = 0;
+    long solves = 0;          ///< linear solves (active-set passes), over all steps
+    long cappedSteps = 0;     ///< steps whose active set had not settled after the last pass
+    long iterations = 0;      ///< CG iterations over all solves (0 with the direct solver)
+    double seconds = 0;       ///< s of wall time in the response, assembly, solve and correction
+    const char* solver = "";  ///< the linear solver, for the summary
+};
+
 template <int D>
 class TimeIntegrator {
 public:
@@ -65,6 +76,7 @@ public:
     /// Returns the gate flux, m3/s into the column. Throws qs::Error if the scheme cannot advance
     /// (a pressure solve that fails), naming the time and the cell.
     virtual Real solveVelocities(const StepInputs& in, Real time) = 0;
+    virtual IntegratorStats stats() const { return {}; }
 };
 
 template <int D>

@@ -25,12 +25,16 @@ struct CaseRun {
     std::vector<PipeSurvey> pipes;               ///< 2D/3D: the pipes found in them
 };
 
-/// The time scheme the suite runs with: each case's own, unless the environment's
-/// QUICKSAND_TEST_SCHEME names one ("explicit" or "semi_implicit"). ctest runs the suite once
-/// per scheme (tests/CMakeLists.txt): every problem holds for both with the same tolerances.
+/// The scheme this test binary runs every case with: "explicit" or "semi_implicit"
+/// (verification/scheme/*.cpp, one per binary).
+const char* defaultTestScheme();
+
+/// The time scheme the suite runs with: the binary's (ctest runs the suite once per scheme,
+/// tests/CMakeLists.txt: every problem holds for both with the same tolerances), unless the
+/// environment's QUICKSAND_TEST_SCHEME names one.
 inline void applyTestScheme(CaseConfig& c) {
     const char* scheme = std::getenv("QUICKSAND_TEST_SCHEME");
-    if (!scheme || !*scheme) return;
+    if (!scheme || !*scheme) scheme = defaultTestScheme();
     const std::string s = scheme;
     if (s == "semi_implicit") c.time.scheme = TimeScheme::SemiImplicit;
     else if (s == "explicit") c.time.scheme = TimeScheme::Explicit;
