@@ -11,6 +11,15 @@
 #                                      resident byte once per step would take; three interleaved
 #                                      rounds, best rate and spread (LATERAL_ROUNDS=N for more)
 #   bash tools/benchmark.sh --consolidation3d   the 3D consolidation benchmark case, 1 and 2 threads
+#   bash tools/benchmark.sh --schemes  the explicit and semi-implicit time schemes side by side
+#                                      (one thread each, one after the other): the Deltares column
+#                                      (cases/deltaresColumnLumped, the paper's soft water) to 100 s
+#                                      in 1D and in 2D (9 cells of 9.3 mm across), and in 1D with
+#                                      real water (K_L = 2.2 GPa) to 10 s; dt, steps, wall time and
+#                                      the ratios, and the semi-implicit pressure solve's share.
+#                                      Then BM_Pressure2D/3D: the solve alone, 1e3 to 1e6 cells,
+#                                      Eigen's sparse Cholesky against CG with incomplete Cholesky.
+#                                      About an hour on this machine (SCHEMES_END=10 for 10 s runs)
 # Speed is measured here, never by timed tests.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -26,6 +35,51 @@ if [[ "$mode" == "--consolidation3d" ]]; then
         echo "== cases/benchmark/consolidation3d, OMP_NUM_THREADS=$threads"
         OMP_NUM_THREADS=$threads "$build_dir/mpm/quicksand" run "$work/case" | grep -E "^quicksand: done"
     done
+    exit 0
+fi
+
+if [[ "$mode" == "--schemes" ]]; then
+    work="$(mktemp -d)"
+    trap 'rm -rf "$work"' EXIT
+    end="${SCHEMES_END:-100}"
+    run() {  # label, scheme, end, then --set overrides
+        local label="$1" scheme="$2" t="$3"; shift 3
+        rm -rf "$work/case"; cp -r cases/deltaresColumnLumped "$work/case"; rm -rf "$work/case/output"
+        local out
+        out=$(OMP_NUM_THREADS=1 "$build_dir/mpm/quicksand" run "$work/case" --set time.end="$t" \
+              --set time.scheme="\"$scheme\"" --set time.checkpoint_interval=0 "$@" | grep -E "^quicksand: (done|semi)")
+        local steps wall
+        steps=$(echo "$out" | sed -nE 's/^quicksand: done, ([0-9]+) steps in .*/\1/p')
+        wall=$(echo "$out" | sed -nE 's/^quicksand: done, [0-9]+ steps in ([0-9.]+ [a-z]+) .*/\1/p')
+        local share
+        share=$(echo "$out" | sed -nE 's/.*the pressure solve took ([0-9.]+ %).*/\1/p')
+        printf "%-34s %-14s %10s steps  %10s  %s\n" "$label" "$scheme" "$steps" "$wall" "${share:+solve $share}"
+        echo "$label|$scheme|$steps|$wall" >> "$work/table"
+    }
+    echo "== the Deltares column, one thread per run; end $end s (real water: $((end / 10)) s)"
+    for scheme in explicit semi_implicit; do run "1D, soft water (paper)" "$scheme" "$end"; done
+    for scheme in explicit semi_implicit; do
+        run "2D, 9 x 20 cells of 9.3 mm, soft" "$scheme" "$end" --set grid.dimension=2 --set grid.width=0.0837
+    done
+    for scheme in explicit semi_implicit; do
+        run "1D, real water (2.2 GPa)" "$scheme" "$((end / 10))" --set liquid.bulk_modulus=2.2e9
+    done
+    /usr/bin/python3 - "$work/table" <<'PY'
+import sys
+def seconds(text):
+    v, unit = text.split()
+    return float(v) * {"s": 1, "min": 60, "h": 3600}[unit]
+rows = [l.strip().split("|") for l in open(sys.argv[1])]
+by = {}
+for label, scheme, steps, wall in rows:
+    by.setdefault(label, {})[scheme] = (int(steps), seconds(wall))
+for label, r in by.items():
+    (se, we), (ss, ws) = r["explicit"], r["semi_implicit"]
+    print(f"{label}: semi-implicit step {se / ss:.2f} x the explicit one, wall time {we / ws:.2f} x shorter")
+PY
+    echo "== the pressure solve alone (BM_Pressure2D/3D: cells per axis / 1 direct, 2 CG)"
+    OMP_NUM_THREADS=1 "$build_dir/tools/benchmarks/quicksand_benchmarks" --benchmark_filter='BM_Pressure' \
+        2>&1 | grep -E '^(BM_|---|Benchmark)'
     exit 0
 fi
 

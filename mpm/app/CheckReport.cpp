@@ -11,6 +11,7 @@
 #include "physics/ClosedForms.hpp"
 #include "physics/PipeFriction.hpp"
 #include "physics/WaveSpeeds.hpp"
+#include "physics/DragLaw.hpp"
 #include "physics/Permeability.hpp"
 #include "solver/ColumnBuilder.hpp"
 #include "solver/RunPreconditions.hpp"
@@ -53,8 +54,7 @@ double expectedSteadyFilterVelocity(const CaseConfig& config) {
         for (const auto& layer : config.layers) {
             const auto& m = config.material(layer.material);
             const auto law = PermeabilityLaw::from(m);
-            const double k = law.kappa(m.porosity), F = law.ergunFactor(m.porosity);
-            h += layer.thickness * (mu * q / k + F * rho * q * std::abs(q) / std::sqrt(k)) / (rho * g);
+            h += layer.thickness * DragLaw{mu, rho}.gradient(law.kappa(m.porosity), law.ergunFactor(m.porosity), q) / (rho * g);
         }
         return h;
     };

@@ -123,7 +123,7 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
             liquid.x.push_back(z);
             // the new water moves and is pressed like the water just above it: its pressure is
             // that water's cell's field where it is put (the field the next step reads its cells'
-            // water from, GridUpdate.cpp), or the limit, with its cavity, if that water is there
+            // water from, PorePressure.cpp), or the limit, with its cavity, if that water is there
             Real pressure = liquid.pressure[ref];
             if (liquid.cavity[ref] == 0) {
                 const Index at = liquid.x.size() - D;

@@ -36,6 +36,9 @@ enum class GateMode { Pressure, Flux, Closed };
 /// all explicit, bounded by the water's compression wave, or with the pressure implicit
 /// (a projection), bounded by the skeleton's wave only.
 enum class TimeScheme { Explicit, SemiImplicit };
+/// The semi-implicit step's linear solver (solver/PressureSystem.hpp): the direct one up to
+/// 20 000 cells and conjugate gradients beyond (Automatic), or either always.
+enum class PressureSolver { Automatic, Direct, ConjugateGradient };
 /// What sand reaching the overflow level does: leaves with the water, or stops the run.
 enum class SandOverflow { Carry, Stop };
 enum class ReservoirKind { ConstantHead, Lumped, OpenFoam };
@@ -199,6 +202,7 @@ struct CouplingConfig {
 struct TimeConfig {
     double end = 1.0;                  ///< s, simulated time
     TimeScheme scheme = TimeScheme::Explicit;
+    PressureSolver pressureSolver = PressureSolver::Automatic;  ///< semi-implicit scheme only
     double courant = 0.4;              ///< -, dt = courant * h / c, c the scheme's wave speed, in (0, 0.5]
     std::optional<double> dt;          ///< s, fixed step (must not exceed the stable one)
     double outputInterval = 0.01;      ///< s

@@ -78,7 +78,7 @@ constexpr const char* kReservoirKeys[] = {
 constexpr const char* kCouplingKeys[] = {"scheme", "window", "tolerance", "max_iterations",
                                          "relaxation"};
 constexpr const char* kTimeKeys[] = {
-    "end", "scheme", "courant", "dt", "output_interval", "checkpoint_interval"};
+    "end", "scheme", "pressure_solver", "courant", "dt", "output_interval", "checkpoint_interval"};
 constexpr const char* kMonitorKeys[] = {"name", "elevation", "x", "y"};
 constexpr const char* kOutputKeys[] = {"directory", "fields", "progress_interval"};
 
@@ -139,6 +139,9 @@ const Options<TubeFriction> kTubeFrictionOptions = {{"smooth_pipe", TubeFriction
                                                     {"laminar", TubeFriction::Laminar}};
 const Options<TimeScheme> kTimeSchemeOptions = {{"explicit", TimeScheme::Explicit},
                                                  {"semi_implicit", TimeScheme::SemiImplicit}};
+const Options<PressureSolver> kPressureSolverOptions = {{"automatic", PressureSolver::Automatic},
+                                                         {"direct", PressureSolver::Direct},
+                                                         {"conjugate_gradient", PressureSolver::ConjugateGradient}};
 const Options<CouplingKind> kCouplingOptions = {{"explicit", CouplingKind::Explicit},
                                                    {"implicit", CouplingKind::Implicit}};
 const Options<ReservoirKind> kReservoirOptions = {{"constant_head", ReservoirKind::ConstantHead},
@@ -661,6 +664,7 @@ private:
         TimeConfig& t = c_.time;
         t.end = s.requiredNumber("end", positive("s"), "simulated end time");
         t.scheme = s.choice("scheme", TimeScheme::Explicit, kTimeSchemeOptions);
+        t.pressureSolver = s.choice("pressure_solver", PressureSolver::Automatic, kPressureSolverOptions);
         t.courant = s.optionalNumber("courant", 0.4, between(0, true, 0.5, false));
         t.dt = s.optionalNumber("dt", positive("s"));
         t.outputInterval = s.optionalNumber("output_interval", t.end / 100.0, positive("s"));

@@ -27,10 +27,31 @@
 // h -> 0 and zero in a uniform bed. alpha = 0.25, the smallest value that removed the ripples in
 // a 1D study of the kinematics (docs/fluidisation.md). For the paper's sand c = 5.1e-3 m/s at
 // n_max = 0.41; on 6 mm cells D = 7.6e-6 m2/s.
+#include <algorithm>
+
 #include "core/Types.hpp"
+#include "physics/DragLaw.hpp"
+#include "physics/Permeability.hpp"
 
 namespace qs {
 
 constexpr Real kFrontDiffusionAlpha = 0.25;
+
+/// m/s, the filter velocity of the equilibrium suspension at porosity n: the drag carries the
+/// grains' buoyant weight, (1 - n)(rho_s - rho_L) g, as the pressure gradient of the relative flow.
+inline Real equilibriumSuspensionFlux(const DragLaw& drag, const PermeabilityLaw& law, Real grainDensity,
+                                      Real gravity, Real n) {
+    return drag.flux(law.kappa(n), law.ergunFactor(n), (1 - n) * (grainDensity - drag.liquidDensity) * gravity);
+}
+
+/// m2/s, D = alpha h c at n = n_max (capped at 0.9), c = (1 - n) dq/dn the kinematic wave speed of
+/// the equilibrium suspension, on cells of h (m).
+inline Real frontDiffusivity(const DragLaw& drag, const PermeabilityLaw& law, Real grainDensity, Real gravity,
+                             Real maxPorosity, Real h) {
+    const Real n = std::min(maxPorosity, Real(0.9)), dn = 1e-4;
+    auto q = [&](Real at) { return equilibriumSuspensionFlux(drag, law, grainDensity, gravity, at); };
+    const Real c = (1 - n) * (q(n + dn) - q(n - dn)) / (2 * dn);
+    return kFrontDiffusionAlpha * h * std::max(c, Real(0));
+}
 
 }  // namespace qs

@@ -15,9 +15,7 @@ namespace qs {
 
 template <int D>
 void DoublePointSolver<D>::exchangeAtBoundaries() {
-    cumulativeInflow_ += gateFlux_ * dt_;
-    gatePressure_ = gateLaw_.pressure(gateFlux_);
-    reservoir_.advance(time_, dt_, gateFlux_);
+    advanceReservoir();
 
     // The chamber first, on the step's cell lists: its new water takes the field of the cell that
     // set its reference point's pressure (updatePressure). Injected after the spill, on the lists

@@ -6,6 +6,7 @@
 
 #include "core/Error.hpp"
 #include "materials/StressTensor.hpp"
+#include "physics/DragLaw.hpp"
 #include "physics/Permeability.hpp"
 #include "physics/RandomPorosityField.hpp"
 #include "solver/DoublePointSolver.hpp"
@@ -96,10 +97,10 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
     // layers above take, Darcy-Forchheimer at n0). The seepage force lifts the effective stress
     // off the skeleton; at q0 = U_mf it carries the whole buoyant weight.
     const Real q0 = config.initial.filterVelocity, mu = config.liquid.viscosity;
+    const DragLaw drag{mu, rhoL};
     auto seepageGradient = [&](const MaterialConfig& m) {  // i gamma_w, Pa/m
         const PermeabilityLaw law = PermeabilityLaw::from(m);
-        const Real kappa = law.kappa(m.porosity);
-        return mu * q0 / kappa + law.ergunFactor(m.porosity) * rhoL * q0 * std::abs(q0) / std::sqrt(kappa);
+        return drag.gradient(law.kappa(m.porosity), law.ergunFactor(m.porosity), q0);
     };
     const std::size_t nl = config.layers.size();
     std::vector<Real> layerBottom(nl);

@@ -19,10 +19,9 @@ namespace qs {
 
 namespace {
 Index roundCells(Real length, Real h) { return static_cast<Index>(std::llround(length / h)); }
-
 /// D = alpha h c at n = n_max (physics/FrontDiffusion.hpp), c = phi dq/dn the kinematic wave
 /// speed of the equilibrium suspension.
-Real frontDiffusivity(const CaseConfig& config, const MaterialConfig& m, Real h) {
+Real frontDiffusivityOld(const CaseConfig& config, const MaterialConfig& m, Real h) {
     closed::SuspensionFlux flux;
     flux.law = PermeabilityLaw::from(m);
     flux.grainDensity = m.grainDensity;
@@ -33,6 +32,7 @@ Real frontDiffusivity(const CaseConfig& config, const MaterialConfig& m, Real h)
     const Real c = (1 - n) * (flux.equilibriumFlux(n + dn) - flux.equilibriumFlux(n - dn)) / (2 * dn);
     return kFrontDiffusionAlpha * h * std::max(c, Real(0));
 }
+
 }  // namespace
 
 // ---------------------------------------------------------------------------------------------
@@ -60,7 +60,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.suspension.waterViscosity = config.liquid.viscosity;
         s.suspension.maxPacking = 1 - m.minPorosity;
         s.permeability = PermeabilityLaw::from(m);
-        s.frontDiffusivity = frontDiffusivity(config, m, h);
+        s.frontDiffusivity = frontDiffusivityOld(config, m, h);
         materials_.push_back(s);
     }
     // dt = C h / c: with implicit drag the fastest explicit wave is the zero-drag fast wave, and
@@ -185,29 +185,6 @@ Real DoublePointSolver<D>::surchargeNow() const {
     const Real q = config_.loads.surcharge, ramp = config_.loads.surchargeRampTime;
     if (damping_) return config_.initial.undrainedSurcharge ? q : 0.0;
     return (ramp > 0 && time_ < ramp) ? q * time_ / ramp : q;
-}
-
-template <int D>
-Real DoublePointSolver<D>::gateVelocityNow() const {
-    if (config_.gate.mode != GateMode::Flux) return 0.0;
-    // from the initial seepage (at rest by default) to the gate's flux, linearly over the ramp
-    const Real v0 = config_.initial.filterVelocity, v = config_.gate.flux, ramp = config_.gate.fluxRampTime;
-    return (ramp > 0 && time_ < ramp) ? v0 + (v - v0) * time_ / ramp : v;
-}
-
-template <int D>
-StepInputs DoublePointSolver<D>::stepInputs() const {
-    StepInputs in;
-    in.dt = dt_;
-    in.damping = damping_;
-    in.dampingAlpha = dampingAlpha_;
-    in.gate.velocity = gateVelocityNow();
-    in.gate.area = gateArea_;
-    in.gate.resistance = config_.gate.mode == GateMode::Pressure ? gateLaw_.resistance : 0.0;
-    // in 2D and 3D a pressure gate moves its water in at one velocity across the gate plane
-    // (NodeVelocities.cpp); in 1D the gate is one node and the two are the same
-    in.gate.uniform = D > 1 && config_.gate.mode == GateMode::Pressure;
-    return in;
 }
 
 template <int D>

@@ -22,10 +22,13 @@
 //   7 exchangeAtBoundaries  inflow injection, outflow removal, ledger, reservoir
 //   8 checkHealth         a non-finite value, a runaway point, a porosity outside (0, 1) stops the run
 // Every phase is deterministic: results do not depend on the number of OpenMP threads.
-// The phases live in their own files: PointsToGrid.cpp (1, 2), GridUpdate.cpp (3, 4),
-// LiquidStateSwitch.cpp (4b), FrontDiffusion.cpp (4c), GridToPoints.cpp (5, 6), BoundaryExchange.cpp (7), HealthCheck.cpp (8); set-up and the step itself here in
-// DoublePointSolver.cpp, the measurements in ColumnMeasurements.cpp, checkpoints in
-// SolverCheckpoint.cpp.
+// The phases live in their own files: PointsToGrid.cpp (1, 2), Forces.cpp (3), the time scheme
+// behind TimeIntegrator.hpp (4), LiquidStateSwitch.cpp (4b), FrontDiffusion.cpp (4c),
+// GridToPoints.cpp (5), BoundaryExchange.cpp (7), HealthCheck.cpp (8). Each physics term has its
+// own home: the free surface FreeSurface.cpp (1), the pore pressure PorePressure.cpp (3, 6), the
+// gate Gate.cpp (3, 4, 7), the drag physics/DragLaw.hpp (2), the node solve NodeVelocities.hpp
+// (4). Set-up and the step itself here in DoublePointSolver.cpp, the measurements in
+// ColumnMeasurements.cpp, checkpoints in SolverCheckpoint.cpp.
 #include <algorithm>
 #include <memory>
 #include <string>
@@ -149,13 +152,18 @@ private:
     void classifyCells();
     void pointsToGrid();
     void measureSandPorosity();
-    void computeForces();
-    void computePressureGradient();
+    void computeForces();             // Forces.cpp: the order of the forces below
+    void cellWaterFromPoints();       // PorePressure.cpp
+    void computePressureGradient();   // PorePressure.cpp
+    void pressureForces();            // PorePressure.cpp
+    void gravityForces();             // Forces.cpp
+    void gateTraction();              // Gate.cpp
     void switchLiquidState();
     void diffuseFronts();
     void gridToPoints();
     void updatePressure();
     void exchangeAtBoundaries();
+    void advanceReservoir();          // Gate.cpp
     void carrySandOut(Real zOverflow);
     void checkHealth() const;
 

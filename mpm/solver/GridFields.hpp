@@ -95,7 +95,7 @@ struct CellFilling {
 };
 
 /// Each cell's pore water: one pressure per cell with a gradient about its centre (computeForces
-/// in GridUpdate.cpp).
+/// in PorePressure.cpp).
 template <int D>
 struct CellWater {
     std::vector<Real> pressure;          ///< Pa, p_c at the cell's centre at the start of the step

@@ -220,68 +220,8 @@ void DoublePointSolver<D>::gridToPoints() {
     });
 }
 
-// ---------------------------------------------------------------------------------------------
-// 6 pore pressure, one value per cell
-// ---------------------------------------------------------------------------------------------
-
-template <int D>
-void DoublePointSolver<D>::updatePressure() {
-    // dp_c = -(K_L / n_c) dt sum_i grad N_i(x_c) . Phi_i,  Phi_i = (1-n_i) v_S,i + n_i v_L,i
-    // (compressible liquid, incompressible grains; the cell average avoids volumetric locking).
-    // K_L is a numerical stiffness: this is artificial compressibility, taken at a fixed place.
-    const Real KL = config_.liquid.bulkModulus, dt = dt_;
-    const bool zeroSurface = config_.liquid.freeSurfaceZeroPressure;
-    forAllCells(grid_.numCells(), cells_.liquidStart, [&](Index c) {
-        if (!cells_.hasLiquid(c)) return;
-        Real div = 0;
-        grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
-            const Real ni = nodes_.porosity[i];
-            for (int a = 0; a < D; ++a) {
-                const Real gN = grid_.divergenceWeight(c, corner, a);  // with the hoop part in axisymmetry
-                div += gN * ((1 - ni) * nodes_.velS[i * D + a] + ni * nodes_.velL[i * D + a]);
-            }
-        });
-        // the water's top cells are open to the air (classifyCells): they take no suction, and
-        // what they expand is their surface rising, not a cavity, so none is kept. Kept there,
-        // the top row's water at p ~ 0 gathered cavities from every ripple and the gate's flux
-        // strayed 1.9 % from the filter's in the side-by-side gravels
-        const bool openToAir = filling_.openToAir[c];
-        // the cell's water (computeForces) pressed by the mixture's strain, which is the water's
-        // over n_c: beyond the limit a cavity opens, which a compression closes before it
-        // presses the water (physics/Cavitation.hpp)
-        const CavitatingWater water =
-            pressWater({water_.pressure[c], water_.cavity[c]}, -KL / water_.porosity[c] * dt * div, KL, cellLimit(c));
-        // Each point takes the cell's field where it now is, p_c + grad p_c . (x - x_c): the field
-        // the liquid moves through, so that a point entering the next cell brings that cell's
-        // pressure instead of kicking its mean by a cell's drop. Points carried their own
-        // pressures along the gradient until 2026-12-05: nothing then pulled a point back to its
-        // cell's field, and once piping2D's bed fluidised, points from cells at the limit mixed
-        // with pressed ones and kept their own values, rms 1 to 44 kPa about the cell's field
-        // (docs/piping.md, "The point pressures"). Water within a cell equalises in h / c_L (three
-        // steps), so one state per cell is the water's physics at this resolution.
-        Real centre[D];
-        const IVec<D> cc = grid_.cellCoords(c);
-        for (int a = 0; a < D; ++a) centre[a] = grid_.cellCentre(cc[a]);
-        const Real* grad = &water_.pressureGradient[c * D];
-        // The cavity the points keep decides how the next step reads them back (computeForces):
-        // with none, along the gradient; so the gradient goes on exactly where none is kept.
-        const Real cavity = openToAir ? 0 : water.cavity;
-        for (Index p = cells_.liquidStart[c]; p < cells_.liquidStart[c + 1]; ++p) {
-            Real pressure = water.pressure;
-            if (cavity == 0)
-                for (int a = 0; a < D; ++a) pressure += grad[a] * (liquid_.x[p * D + a] - centre[a]);
-            const bool surface = liquid_.state[p] == kFreeSurfaceLiquid;
-            liquid_.pressure[p] = zeroSurface && surface && openToAir ? 0 : pressure;  // p = 0 only with no cavity
-            liquid_.cavity[p] = cavity;
-        }
-    });
-}
-
 template void DoublePointSolver<1>::gridToPoints();
-template void DoublePointSolver<1>::updatePressure();
 template void DoublePointSolver<2>::gridToPoints();
-template void DoublePointSolver<2>::updatePressure();
 template void DoublePointSolver<3>::gridToPoints();
-template void DoublePointSolver<3>::updatePressure();
 
 }  // namespace qs

@@ -1,5 +1,5 @@
-// Phases 1 and 2 of the double-point step: points sorted by cell, cells classified (active,
-// submerged, liquid weights V*), then lumped masses, momenta, the effective-stress force, nodal
+// Phases 1 and 2 of the double-point step: points sorted by cell (the cells' water and free
+// surface are FreeSurface.cpp's), then lumped masses, momenta, the effective-stress force, nodal
 // porosity and drag coefficients mapped to the grid (physics.md section 2).
 #include <algorithm>
 #include <cmath>
@@ -9,21 +9,15 @@
 #include "boundary/Overflow.hpp"
 #include "grid/ShapeFunctions.hpp"
 #include "materials/StressTensor.hpp"
+#include "physics/DragLaw.hpp"
 #include "solver/Parallel.hpp"
 #include "solver/PointStencil.hpp"
 
 namespace qs {
 
-namespace {
-/// -, the fill of a cell (its wet share) from which the cell below it counts as below
-/// the free surface: more than a stray point or two (the free water holds lpc^(D-1) n_z points a
-/// cell, n_z = lpc / n_min: 7 in 1D, 14 in 2D for the shipped cases), less than any cell of a
-/// connected water body, whose points bunch by -15 % at most
-constexpr Real kSubmergingFill = 0.25;
-}  // namespace
 
 // ---------------------------------------------------------------------------------------------
-// 1 sort points by cell, classify cells
+// 1 sort points by cell
 // ---------------------------------------------------------------------------------------------
 
 /// Each point's cell, the points sorted by cell (stable) and each cell's first point (cellStart).
@@ -96,123 +90,9 @@ void DoublePointSolver<D>::sortPoints() {
     computeWeights(liquid_);
 }
 
-template <int D>
-void DoublePointSolver<D>::classifyCells() {
-    const Index nc = grid_.numCells();
-    forAllCells(nc, cells_.liquidStart, [&](Index c) {
-        Real vol = 0;
-        for (Index p = cells_.liquidStart[c]; p < cells_.liquidStart[c + 1]; ++p) vol += liquid_.volume[p];
-        filling_.liquidVolume[c] = vol;
-        // the wet share of the cell: a liquid point stands for a mixture volume (its water is
-        // n rho_L V), so the points of a saturated cell add up to the cell's volume, sand or not
-        filling_.fill[c] = std::min(Real(1), vol / grid_.cellVolume(c));
-        filling_.active[c] = cells_.hasLiquid(c) || cells_.hasSolid(c);
-    });
-    // A cell is below the free surface when the cell above is a quarter wet or more
-    // (kSubmergingFill), or when it is a cell of the top row below the overflow
-    // level and holds liquid: the overflow holds the water's surface at its level (a node row), so
-    // the water's top cells are full however few points they hold at the moment. There the
-    // cell's liquid points share the whole cell, V* = V_cell V / sum V, so they fill the pores and
-    // a half-empty chamber cell carries no multiple of the gate pressure; above the free surface
-    // V* = V (physics.md). A few stray points above (spray, a drop falling back) do not make a
-    // half-filled cell full: decided by any liquid above, one point above doubled the cell's
-    // pressure weight (test FreeSurface.AStrayPointAboveLeavesThePorePressureBelowAsItWas).
-    // Deciding the overflow's top row from its points instead (thin: a free surface) made it a
-    // moving, point-sampled surface: in 2D its cells flipped between full and thin as the points
-    // passing through came and went, which pumped energy into the free water (lateral velocities
-    // of 1 m/s within 2 s in a seepage of 1.5 cm/s, two gravels side by side) and slowed the flux.
-    const Index up = grid_.cellStride(D - 1);
-    const Index rows = grid_.cells(D - 1);
-    liquid_.weight.resize(liquid_.size());
-    forAllCells(nc, cells_.liquidStart, [&](Index c) {
-        const Index row = (c / up) % rows;
-        const bool holdsLiquid = cells_.hasLiquid(c);
-        const bool above = (row + 1 < rows && filling_.fill[c + up] >= kSubmergingFill) ||
-                           (row + 1 == overflowRow_ && holdsLiquid);
-        filling_.submerged[c] = above;
-        const Real volume = grid_.cellVolume(c);
-        const Real scale = above && filling_.liquidVolume[c] > 0 ? volume / filling_.liquidVolume[c] : 1.0;
-        const bool thin = filling_.fill[c] < config_.liquid.freeSurfaceFilling;
-        for (Index p = cells_.liquidStart[c]; p < cells_.liquidStart[c + 1]; ++p) {
-            liquid_.weight[p] = liquid_.volume[p] * scale;
-            liquid_.state[p] = (!above && thin) ? kFreeSurfaceLiquid : kSubmergedLiquid;
-        }
-    });
-    // Which cells' water is under the air: scanned down each column of cells, a cell without
-    // sand and without sand anywhere above it (sand's pores are saturated, however few liquid
-    // points a loosened cell holds at the moment) whose cell above is under a quarter wet, and
-    // the cells of the overflow's row that hold no sand. Spray above an air gap does not close the
-    // surface below it (only the cell just above counts for water). They take no suction and keep
-    // no cavity (updatePressure). Decided cell by cell (no wet cell just above), a sand-free pocket
-    // under a water-starved cell inside piping2D's bed vented, and so did a starved sand cell by
-    // the wall: it held p = 0 while its neighbours rose to 70 kPa, and a solid point left at
-    // 726 m/s (13.38 s).
-    forAll(up, [&](Index column) {
-        bool sandAbove = false;
-        for (Index row = rows; row-- > 0;) {
-            const Index c = column + row * up;
-            const bool holdsSand = cells_.hasSolid(c);
-            const bool overflowRow = row + 1 == overflowRow_;
-            sandAbove = sandAbove || holdsSand;
-            filling_.openToAir[c] = !sandAbove && (overflowRow || !filling_.submerged[c]);
-        }
-    });
-    // The overflow's top cells count as full only while the water stands there: fallen a cell
-    // below it (the reservoir drained the column, the water spilled elsewhere), the grid would hold
-    // water the column has lost, and the run stops saying so (the head is checked against the
-    // overflow before the run, io/CaseRules.cpp).
-    // The water is measured over the top two rows, from the points' extents (a point's water spans
-    // z +- V / (2 a), a its footprint), and the run stops when they hold less than one row's worth.
-    // A liquid point spills whole (the weir, boundary/Overflow.hpp), so the row under the rim loses
-    // up to half a point of water at once: half a cell in sand (two points a cell), more where a
-    // suspension's points have grown. Counted by centres in the top row alone, the Deltares
-    // column through a 10 mm tube stopped with its water at the rim all along: a bed heaving
-    // against the rim read 49.7 % each time its top point left (t = 7.75 s), and, fluidised, a
-    // point of 0.83 cells leaving left 46.7 % (t = 14.17 s).
-    if (overflowRow_ > 0) {
-        Real room = 0;
-        const Index lowRow = std::max<Index>(overflowRow_ - kRimRows, 0);
-        const Index first = lowRow * up, last = overflowRow_ * up;  // cells of the rows measured
-        for (Index c = first; c < last; ++c) room += grid_.cellVolume(c);
-        // their points, those of the row below and those of the row above, whose extents reach
-        // into them (the weir holds crest water there, straddling the rim)
-        const Index from = lowRow >= 1 ? (lowRow - 1) * up : first;
-        const Index to = std::min(last + up, nc);
-        const Real water = waterBetween(grid_, liquid_, cells_.liquidStart[from], cells_.liquidStart[to],
-                                        lowRow * grid_.h(), overflowRow_ * grid_.h(), config_.points.liquidPerCell);
-        const Real rowsMeasured = static_cast<Real>(overflowRow_ - lowRow);
-        const Real missing = std::max(Real(0), room - water) / room * rowsMeasured;  // in rows
-        QS_CHECK(missing <= 1,
-                 "the water fell below the overflow level column.overflow_level = "
-                     << *config_.column.overflowLevel << " m at t = " << time_ << " s: the top "
-                     << (overflowRow_ - lowRow) << " rows of cells under it lack " << missing
-                     << " rows of water. The overflow holds the water's surface at its level, so the reservoir's "
-                        "head must keep the column full to it");
-    }
-}
-
 // ---------------------------------------------------------------------------------------------
 // 2 points to grid
 // ---------------------------------------------------------------------------------------------
-
-/// m3, the pore volume a node's water fills (times n_i, the water it carries): each cell around it
-/// gives its share of the node's volume as if it were wet from its bottom up to its fill f, the
-/// wet share of the cell (f = 1 below the free surface): f^2 of the share to the cell's top
-/// nodes, 2f - f^2 to its bottom nodes (the integrals of the linear N over the wet part). The cells at and
-/// above the overflow level do not count (no water stands there).
-template <int D>
-Real DoublePointSolver<D>::waterVolumeAt(Index node) const {
-    Real volume = 0;
-    grid_.forEachCellOfNode(node, [&](Index cell, int corner) {
-        if (!filling_.active[cell]) return;
-        if (overflowRow_ >= 0 && grid_.cellCoords(cell)[D - 1] >= overflowRow_) return;
-        const bool full = filling_.submerged[cell] && cells_.hasLiquid(cell);
-        const Real f = full ? 1 : filling_.fill[cell];  // below the free surface the pores are full
-        const bool top = (corner >> (D - 1)) & 1;
-        volume += grid_.cellShare(cell, corner) * (top ? f * f : f * (2 - f));
-    });
-    return volume;
-}
 
 template <int D>
 void DoublePointSolver<D>::pointsToGrid() {
@@ -245,11 +125,11 @@ void DoublePointSolver<D>::pointsToGrid() {
         SolidShares t;
         const Real V = solid_.volume[p], n = solid_.porosity[p];
         const auto& mat = materials_[solid_.material[p]];
-        const Real kappa = mat.permeability.kappa(n);
+        const DragLaw::Shares drag = DragLaw::pointShares(mat.permeability.kappa(n), mat.permeability.ergunFactor(n), V);
         t.m = solid_.mass[p];
         t.grains = t.m / mat.grainDensity;
-        t.dragA = V / kappa;
-        t.dragB = V * mat.permeability.ergunFactor(n) / std::sqrt(kappa);
+        t.dragA = drag.darcy;
+        t.dragB = drag.forchheimer;
         const Real* s = &solid_.stress[p * 6];
         for (int d = 0; d < D; ++d)
             for (int e = 0; e < D; ++e) t.stressV[d][e] = -V * s[voigt(axis3<D>(d), axis3<D>(e))];
@@ -385,7 +265,8 @@ void DoublePointSolver<D>::pointsToGrid() {
 
     // Nodal porosity n_i = 1 - (sum N m_s / rho_s) / V_i with V_i = integral of N_i over the
     // active cells only: over the whole grid the sand surface would look far too porous.
-    const Real mu = config_.liquid.viscosity, rhoL = config_.liquid.density;
+    const Real rhoL = config_.liquid.density;
+    const DragLaw drag{config_.liquid.viscosity, rhoL};
     const bool gridLiquid = config_.liquid.gridLiquidMass;
     const Index gateRow = grid_.nodeStride(D - 1);
     const Real starved = starvedShare();
@@ -404,7 +285,7 @@ void DoublePointSolver<D>::pointsToGrid() {
         nodes_.sandPorosity[i] = solidSide > 0 ? std::clamp(1 - sums_.grainVolume[i] / solidSide, Real(1e-3), Real(1)) : 1.0;
         // Darcy + Ergun drag, lumped: Q_i = n_i^2 mu sum(N V / kappa)
         //                                 + rho_L n_i^3 |w_i| sum(N V F / sqrt(kappa)),
-        // |w_i| from the last step (physics.md, drag).
+        // |w_i| from the last step (physics/DragLaw.hpp).
         const Real ni = nodes_.porosity[i];
         // The nodal liquid mass is the water the cells around the node hold, rho_L n_i V_w,i
         // (waterVolumeAt), not the sum over liquid points. The points bunch where the chamber
@@ -431,7 +312,7 @@ void DoublePointSolver<D>::pointsToGrid() {
             }
         }
         nodes_.drag[i] = (nodes_.massS[i] > 0 && nodes_.massL[i] > 0)
-                       ? ni * ni * mu * sums_.darcy[i] + rhoL * ni * ni * ni * nodes_.relSpeed[i] * sums_.forchheimer[i]
+                       ? drag.nodal(ni, sums_.darcy[i], sums_.forchheimer[i], nodes_.relSpeed[i])
                        : 0.0;
         // how far the node is fed with sand, per component (a held one keeps its weight): the
         // phases after this read a starved node through it (GridToPoints.cpp)
@@ -483,7 +364,6 @@ void DoublePointSolver<D>::measureSandPorosity() {
 }
 
 template void DoublePointSolver<1>::sortPoints();
-template void DoublePointSolver<1>::classifyCells();
 template void DoublePointSolver<1>::pointsToGrid();
 template void DoublePointSolver<1>::measureSandPorosity();
 template void DoublePointSolver<1>::sortByCell(SolidPoints<1>&, std::vector<Index>&, std::vector<Index>&);
@@ -491,7 +371,6 @@ template void DoublePointSolver<1>::sortByCell(LiquidPoints<1>&, std::vector<Ind
 template void DoublePointSolver<1>::computeWeights(SolidPoints<1>&);
 template void DoublePointSolver<1>::computeWeights(LiquidPoints<1>&);
 template void DoublePointSolver<2>::sortPoints();
-template void DoublePointSolver<2>::classifyCells();
 template void DoublePointSolver<2>::pointsToGrid();
 template void DoublePointSolver<2>::measureSandPorosity();
 template void DoublePointSolver<2>::sortByCell(SolidPoints<2>&, std::vector<Index>&, std::vector<Index>&);
@@ -499,7 +378,6 @@ template void DoublePointSolver<2>::sortByCell(LiquidPoints<2>&, std::vector<Ind
 template void DoublePointSolver<2>::computeWeights(SolidPoints<2>&);
 template void DoublePointSolver<2>::computeWeights(LiquidPoints<2>&);
 template void DoublePointSolver<3>::sortPoints();
-template void DoublePointSolver<3>::classifyCells();
 template void DoublePointSolver<3>::pointsToGrid();
 template void DoublePointSolver<3>::measureSandPorosity();
 template void DoublePointSolver<3>::sortByCell(SolidPoints<3>&, std::vector<Index>&, std::vector<Index>&);

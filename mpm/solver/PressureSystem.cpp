@@ -48,7 +48,9 @@ bool PressureSystem::factorize() {
     if (direct_) {
         if (!analysed_) { ldlt_.analyzePattern(A_); analysed_ = true; }
         ldlt_.factorize(A_);
-        return ldlt_.info() == Eigen::Success;
+        // LDL^T takes indefinite matrices too: a pivot at or below zero means the system is not
+        // the positive definite one the step assembles
+        return ldlt_.info() == Eigen::Success && ldlt_.vectorD().minCoeff() > 0;
     }
     cg_.setTolerance(kTolerance);
     cg_.compute(A_);

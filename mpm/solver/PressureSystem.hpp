@@ -19,10 +19,9 @@
 
 #include "core/Types.hpp"
 #include "grid/Grid.hpp"
+#include "io/CaseConfig.hpp"
 
 namespace qs {
-
-enum class PressureSolver { Automatic, Direct, ConjugateGradient };
 
 class PressureSystem {
 public:

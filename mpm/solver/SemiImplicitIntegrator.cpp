@@ -21,14 +21,13 @@ constexpr Real kBoundTolerance = 1e-6;
 }  // namespace
 
 template <int D>
-SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context, PressureSolver solver)
-    : ctx_(context) {
+SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context) : ctx_(context) {
     const Index nn = ctx_.grid.numNodes(), nc = ctx_.grid.numCells();
     for (auto* a : {&predS_, &predL_, &incL_, &rS_, &rL_, &force_}) a->assign(nn * D, 0.0);
     held_.assign(nc, 0);
     gateWeight_.assign(ctx_.masks.gateNodes.size(), 0.0);
     for (auto* v : {&rhs_, &dp_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
-    system_.build(ctx_.grid, solver);
+    system_.build(ctx_.grid, ctx_.config.time.pressureSolver);
     stats_.solver = system_.direct() ? "sparse Cholesky (Eigen SimplicialLDLT)"
                                      : "conjugate gradients, incomplete Cholesky (Eigen)";
 }

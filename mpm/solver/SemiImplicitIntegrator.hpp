@@ -37,7 +37,7 @@ namespace qs {
 template <int D>
 class SemiImplicitIntegrator final : public TimeIntegrator<D> {
 public:
-    explicit SemiImplicitIntegrator(const StepContext<D>& context, PressureSolver solver = PressureSolver::Automatic);
+    explicit SemiImplicitIntegrator(const StepContext<D>& context);
     TimeScheme scheme() const override { return TimeScheme::SemiImplicit; }
     Real solveVelocities(const StepInputs& in, Real time) override;
     IntegratorStats stats() const override { return stats_; }

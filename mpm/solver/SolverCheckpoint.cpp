@@ -140,15 +140,15 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     time_ = data.scalar("time");
     QS_CHECK(std::isfinite(time_) && time_ >= 0, "entry 'time' is " << time_ << kNotThisCase);
     steps_ = static_cast<long>(wholeNumber(data, "steps", 9007199254740992.0));  // 2^53: exact in a double
-    QS_CHECK(std::abs(data.scalar("dt") - dt_) <= 1e-12 * dt_,
-             "the checkpoint was written with dt = " << data.scalar("dt") << " s, the case now gives "
-                                                     << dt_ << " s: grid or material data changed");
     // a checkpoint before 2026-12-06 is the explicit scheme's
     const bool semi = data.has("semi_implicit") && data.scalar("semi_implicit") != 0;
     QS_CHECK(semi == (config_.time.scheme == TimeScheme::SemiImplicit),
              "the checkpoint was written by the " << (semi ? "semi-implicit" : "explicit")
                  << " scheme, the case now asks for time.scheme = \""
                  << (semi ? "explicit" : "semi_implicit") << "\": resume with the scheme it was written with");
+    QS_CHECK(std::abs(data.scalar("dt") - dt_) <= 1e-12 * dt_,
+             "the checkpoint was written with dt = " << data.scalar("dt") << " s, the case now gives "
+                                                     << dt_ << " s: grid or material data changed");
     // the solid's velocity gradient (APIC, field 9) came on 2026-12-02: an older checkpoint's
     // points start with C = 0, a PIC transfer for their first step
     getSet(data, "solid", solid_, D, SolidPoints<D>::kVelocityGradientField);
@@ -177,7 +177,7 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     QS_CHECK(rs.size() == nodes_.relSpeed.size(), "the checkpoint's grid differs from the case's grid");
     nodes_.relSpeed = rs;
     // the cells' pore-pressure gradient of the last step, which centres this step's cell pressures
-    // (GridUpdate.cpp); a checkpoint written before it was kept starts from none
+    // (PorePressure.cpp); a checkpoint written before it was kept starts from none
     if (data.has("pressure_gradient")) {
         const auto& pg = finiteValues(data, "pressure_gradient", 0);
         QS_CHECK(pg.size() == water_.pressureGradient.size(), "the checkpoint's grid differs from the case's grid");

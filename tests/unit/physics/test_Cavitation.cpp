@@ -69,7 +69,7 @@ TEST(Cavitation, AlongAnyPathOfStrainThePressureIsThatOfTheStrainAlone) {
 }
 
 TEST(Cavitation, WatersMixedKeepTheirVolume) {
-    // A cell's water is the V-weighted mean strain of the points in it (solver/GridUpdate.cpp).
+    // A cell's water is the V-weighted mean strain of the points in it (solver/PorePressure.cpp).
     // A point from a cavity at the limit (volume 1) and one pressed to 3000 Pa (volume 2): the
     // pressed water fills the cavity and expands, and the total volume gained, c V - p V / K_L,
     // is what it was.

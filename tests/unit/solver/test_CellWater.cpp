@@ -1,4 +1,4 @@
-// A cell holds one state of its water (solver/GridUpdate.cpp, computeForces): the points that
+// A cell holds one state of its water (solver/PorePressure.cpp, cellWaterFromPoints): the points that
 // meet in it, some with a cavity and some pressed, mix so that the water's volume is kept. The
 // cell's water strain is the mean of its points' strains e = c - p / K_L weighted by their water
 // (liquid mass), and its pressure the water at that strain, -K_L e above the cavitation limit.

@@ -1,0 +1,41 @@
+// Phase 3 of the double-point step: the nodal forces (physics.md section 2). The effective
+// stress came with the points (PointsToGrid.cpp); here, in this order, which fixes each force
+// entry's sums to the bit: the pore pressure at the step's start (PorePressure.cpp), gravity, the
+// gate's traction (Gate.cpp) and the surcharge. Phase 4, the velocities, is the time scheme's
+// (solver/TimeIntegrator.hpp).
+#include "solver/DoublePointSolver.hpp"
+#include "boundary/Surcharge.hpp"
+#include "solver/Parallel.hpp"
+
+namespace qs {
+
+template <int D>
+void DoublePointSolver<D>::computeForces() {
+    cellWaterFromPoints();
+    computePressureGradient();
+    pressureForces();
+    gravityForces();
+    gateTraction();
+    // Surcharge on the sand top (solid phase), as a traction where the sand's surface is in each
+    // column of cells (boundary/Surcharge.hpp). The water's surface needs none: with an overflow
+    // it is held at the overflow level, where the top cells count as full (classifyCells), and
+    // the natural zero-traction condition holds at a free surface.
+    const Real q = surchargeNow();
+    if (q != 0)
+        addSurcharge(grid_, solid_, cells_.solidStart, config_.points.solidPerCell, q, nodes_.forceS);
+}
+
+template <int D>
+void DoublePointSolver<D>::gravityForces() {
+    const Real g = config_.gravity;
+    forAll(grid_.numNodes(), [&](Index i) {
+        nodes_.forceS[i * D + D - 1] -= nodes_.massS[i] * g;
+        nodes_.forceL[i * D + D - 1] -= nodes_.massL[i] * g;
+    });
+}
+
+template void DoublePointSolver<1>::computeForces();
+template void DoublePointSolver<2>::computeForces();
+template void DoublePointSolver<3>::computeForces();
+
+}  // namespace qs
