@@ -7,8 +7,6 @@
 #include "core/Error.hpp"
 #include "grid/ShapeFunctions.hpp"
 #include "materials/StressTensor.hpp"
-#include "physics/ClosedForms.hpp"
-#include "physics/DriftFlux.hpp"
 #include "solver/ColumnBuilder.hpp"
 #include "boundary/Overflow.hpp"
 #include "solver/Parallel.hpp"
@@ -19,19 +17,6 @@ namespace qs {
 
 namespace {
 Index roundCells(Real length, Real h) { return static_cast<Index>(std::llround(length / h)); }
-/// D = alpha h c at n = n_max (physics/FrontDiffusion.hpp), c = phi dq/dn the kinematic wave
-/// speed of the equilibrium suspension.
-Real frontDiffusivityOld(const CaseConfig& config, const MaterialConfig& m, Real h) {
-    closed::SuspensionFlux flux;
-    flux.law = PermeabilityLaw::from(m);
-    flux.grainDensity = m.grainDensity;
-    flux.liquidDensity = config.liquid.density;
-    flux.gravity = config.gravity;
-    flux.viscosity = config.liquid.viscosity;
-    const Real n = std::min(m.maxPorosity, 0.9), dn = 1e-4;
-    const Real c = (1 - n) * (flux.equilibriumFlux(n + dn) - flux.equilibriumFlux(n - dn)) / (2 * dn);
-    return kFrontDiffusionAlpha * h * std::max(c, Real(0));
-}
 
 }  // namespace
 
@@ -60,7 +45,8 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.suspension.waterViscosity = config.liquid.viscosity;
         s.suspension.maxPacking = 1 - m.minPorosity;
         s.permeability = PermeabilityLaw::from(m);
-        s.frontDiffusivity = frontDiffusivityOld(config, m, h);
+        s.frontDiffusivity = frontDiffusivity(DragLaw{config.liquid.viscosity, config.liquid.density},
+                                              s.permeability, m.grainDensity, config.gravity, m.maxPorosity, h);
         materials_.push_back(s);
     }
     // dt = C h / c: with implicit drag the fastest explicit wave is the zero-drag fast wave, and

@@ -71,10 +71,11 @@ TEST(DragLaw, TheEquilibriumSuspensionAgreesWithTheDriftFluxClosedForm) {
         EXPECT_NEAR(equilibriumSuspensionFlux(drag, closedForm.law, kRhoS, kG, n) / closedForm.equilibriumFlux(n), 1.0,
                     1e-12)
             << "n " << n;
-    // D = alpha h c, c = 5.1e-3 m/s at n_max = 0.41: 7.6e-6 m2/s on 6 mm cells
+    // D = alpha h c, c = (1 - n) dq/dn = 1.1317e-2 m/s at n_max = 0.41 (by hand: the same
+    // quadratic in Python, central differences of 1e-4): 1.6976e-5 m2/s on 6 mm cells
     const double D = frontDiffusivity(drag, closedForm.law, kRhoS, kG, 0.41, 0.006);
-    EXPECT_NEAR(D / (kFrontDiffusionAlpha * 0.006), 5.1e-3, 0.05e-3);
-    EXPECT_NEAR(D, 7.6e-6, 0.1e-6);
+    EXPECT_NEAR(D / (kFrontDiffusionAlpha * 0.006), 1.1317e-2, 1e-6);
+    EXPECT_NEAR(D, 1.6976e-5, 1e-9);
 }
 
 }  // namespace
