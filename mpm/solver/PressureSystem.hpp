@@ -10,8 +10,8 @@
 // The solvers are Eigen's (no hand-written linear algebra):
 //   - Direct: SimplicialLDLT, a sparse Cholesky factorisation with an AMD ordering;
 //   - ConjugateGradient: CG with an incomplete-Cholesky preconditioner (IncompleteCholesky).
-// docs/performance.md, "The pressure solve", measures both; PressureSolver::Automatic takes the
-// direct one up to kDirectCellLimit cells and CG beyond.
+// docs/performance.md, "The pressure solve alone", measures both; PressureSolver::Automatic
+// takes the direct one in 1D and 2D, and in 3D up to kDirectCellLimit3D cells, CG beyond.
 #include <Eigen/IterativeLinearSolvers>
 #include <Eigen/SparseCholesky>
 #include <Eigen/SparseCore>
@@ -25,8 +25,8 @@ namespace qs {
 
 class PressureSystem {
 public:
-    /// Cells up to which Automatic takes the direct solver.
-    static constexpr Index kDirectCellLimit = 20000;
+    /// 3D cells up to which Automatic takes the direct solver (the two are even at 1e3 cells).
+    static constexpr Index kDirectCellLimit3D = 2000;
     /// CG's tolerance on |b - A x| / |b|.
     static constexpr Real kTolerance = 1e-10;
 

@@ -317,9 +317,11 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     double pointSteps = 0;
     const double half = 0.5 * solver.dt();
     if (!options.quiet)
-        std::printf("quicksand: %dD, dt = %.3g s (c_fast = %.1f m/s), %zu solid + %zu liquid points, "
+        std::printf("quicksand: %dD, %s, dt = %.3g s (%s = %.1f m/s), %zu solid + %zu liquid points, "
                     "t = %.4g -> %.4g s%s\n",
-                    D, solver.dt(), solver.waveSpeed(), solver.solid().size(),
+                    D, solver.scheme() == TimeScheme::SemiImplicit ? "semi-implicit" : "explicit", solver.dt(),
+                    solver.scheme() == TimeScheme::SemiImplicit ? "c_skeleton" : "c_fast", solver.waveSpeed(),
+                    solver.solid().size(),
                     solver.liquid().size(), solver.time(), end,
                     windowed ? (", coupled to " + model->name()).c_str() : "");
     if (!options.quiet && windowed && !model->description().empty())
@@ -400,7 +402,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
         const IntegratorStats& i = r.integrator;
         if (i.steps > 0) {
             std::printf("quicksand: semi-implicit step, dt = %.3g s: the pressure solve took %.1f %% of the wall time, "
-                        "%.3f solves per step (%s%s)",
+                        "%.3f solves per step (%s%s",
                         r.dt, r.wallSeconds > 0 ? 100 * i.seconds / r.wallSeconds : 0.0,
                         double(i.solves) / double(i.steps), i.solver, i.iterations > 0 ? ", " : "");
             if (i.iterations > 0) std::printf("%.1f iterations per solve", double(i.iterations) / double(i.solves));

@@ -66,8 +66,8 @@ void BM_Pressure(benchmark::State& state) {
 
 }  // namespace
 
+// 1e3 to 1e5 cells; the 3D direct solver only to 1e4 (its fill makes 1e5 minutes a solve)
 BENCHMARK_TEMPLATE(BM_Pressure, 2)->Name("BM_Pressure2D")
-    ->ArgsProduct({{32, 100, 316, 1000}, {1, 2}})->Unit(benchmark::kMillisecond);
+    ->ArgsProduct({{32, 100, 316}, {1, 2}})->Unit(benchmark::kMillisecond);
 BENCHMARK_TEMPLATE(BM_Pressure, 3)->Name("BM_Pressure3D")
-    ->Args({10, 1})->Args({22, 1})->Args({46, 1})
-    ->Args({10, 2})->Args({22, 2})->Args({46, 2})->Args({100, 2})->Unit(benchmark::kMillisecond);
+    ->Args({10, 1})->Args({22, 1})->Args({10, 2})->Args({22, 2})->Args({46, 2})->Unit(benchmark::kMillisecond);
