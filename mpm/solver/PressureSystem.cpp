@@ -56,8 +56,10 @@ bool PressureSystem::factorize() {
         // the positive definite one the step assembles
         return ldlt_.info() == Eigen::Success && ldlt_.vectorD().minCoeff() > 0;
     }
+    // the preconditioner's ordering once, its incomplete factorisation each step
     cg_.setTolerance(kTolerance);
-    cg_.compute(A_);
+    if (!analysed_) { cg_.analyzePattern(A_); analysed_ = true; }
+    cg_.factorize(A_);
     return cg_.info() == Eigen::Success;
 }
 

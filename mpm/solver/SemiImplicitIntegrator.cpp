@@ -16,8 +16,9 @@ namespace {
 /// Active-set passes a step may take before it keeps what it has: updatePressure presses the
 /// water from the last velocities, so the state stays consistent either way.
 constexpr int kMaxSolves = 8;
-/// Pa: how far past its bound a cell's pressure may come out before the active set changes.
-constexpr Real kBoundTolerance = 1e-6;
+/// Pa: how far past its bound a cell's pressure may come out before the active set changes, at a
+/// cell of pressure p: 1e-6 Pa and 1e-9 of p, above the solve's own noise
+inline Real boundTolerance(Real p) { return 1e-6 + 1e-9 * std::abs(p); }
 }  // namespace
 
 template <int D>
@@ -26,7 +27,7 @@ SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context)
     for (auto* a : {&predS_, &predL_, &incL_, &rS_, &rL_, &force_}) a->assign(nn * D, 0.0);
     held_.assign(nc, 0);
     gateWeight_.assign(ctx_.masks.gateNodes.size(), 0.0);
-    for (auto* v : {&rhs_, &dp_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
+    for (auto* v : {&rhs_, &dp_, &heldValue_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
     system_.build(ctx_.grid, ctx_.config.time.pressureSolver);
     stats_.solver = system_.direct() ? "sparse Cholesky (Eigen SimplicialLDLT)"
                                      : "conjugate gradients, incomplete Cholesky (Eigen)";
@@ -52,22 +53,26 @@ Real SemiImplicitIntegrator<D>::solveVelocities(const StepInputs& in, Real time)
     const CellWater<D>& water = ctx_.water;
     forAll(ctx_.grid.numCells(), [&](Index c) {
         const bool dry = !(water.weight[c] > 0);
-        const bool atBound = !dry && water.pressure[c] <= limit(c) + kBoundTolerance;
+        const bool atBound = !dry && water.pressure[c] <= limit(c) + boundTolerance(water.pressure[c]);
         held_[c] = dry || atBound;
-        dp_[c] = atBound ? limit(c) - water.pressure[c] : 0.0;
+        heldValue_[c] = atBound ? limit(c) - water.pressure[c] : 0.0;
     });
     solves_ = 0;
     bool changed = true;
-    while (changed && solves_ < kMaxSolves) {
+    while (changed) {
         assemble(in.dt);
         solve(in.dt, time);
         correct(in.dt);
         ++solves_;
+        if (solves_ > kMaxSolves) break;  // the pass after the cap, with the set as it stands
         changed = updateHeldCells(in.dt);
     }
     stats_.steps += 1;
     stats_.solves += solves_;
-    if (changed) stats_.cappedSteps += 1;  // the last pass still moved the set: kept as it is
+    // At the cap the set still moved: one more pass solved with it, so that no cell pulls its
+    // neighbours with a suction its water cannot carry; a release it missed is a compression,
+    // which updatePressure presses into the water
+    if (solves_ > kMaxSolves) stats_.cappedSteps += 1;
     stats_.seconds += std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     return gateFlux(ctx_);
 }
@@ -146,15 +151,17 @@ void SemiImplicitIntegrator<D>::assemble(Real dt) {
     Real heldGate = 0;
     if (gateGamma_ > 0)
         for (Index c = 0; c < grid.cellStride(D - 1); ++c)
-            if (held_[c]) heldGate += gateRight_[c] * dp_[c];
+            if (held_[c]) heldGate += gateRight_[c] * heldValue_[c];
     forAll(grid.numCells(), [&](Index c) {
         Real* value = system_.values(c);
         for (Index k = 0; k < system_.size(c); ++k) value[k] = 0;
         const int centre[D] = {};
         const int diagonal = system_.slot(c, PressureSystem::offsetCode(centre, D));
         if (held_[c]) {
+            // an identity row with a zero right-hand side, its known increment written after the
+            // solve: a row in Pa among rows in m3 would dominate CG's stopping test
             value[diagonal] = 1;
-            rhs_[c] = dp_[c];
+            rhs_[c] = 0;
             return;
         }
         const Real V = water.weight[c];
@@ -170,7 +177,7 @@ void SemiImplicitIntegrator<D>::assemble(Real dt) {
                 grid.forEachCellOfNode(i, [&](Index c2, int corner2) {
                     if (!(water.weight[c2] > 0)) return;  // a dry cell: no pressure, no force
                     const Real coupling = beta * (Dc * (water.weight[c2] * grid.divergenceWeight(c2, corner2, a)));
-                    if (held_[c2]) { heldSum += coupling * dp_[c2]; return; }
+                    if (held_[c2]) { heldSum += coupling * heldValue_[c2]; return; }
                     int offset[D];
                     for (int d = 0; d < D; ++d) offset[d] = ((corner >> d) & 1) - ((corner2 >> d) & 1);
                     value[system_.slot(c, PressureSystem::offsetCode(offset, D))] += coupling;
@@ -206,11 +213,14 @@ void SemiImplicitIntegrator<D>::solve(Real dt, Real time) {
             if (held_[c]) left[c] = 0;
         Eigen::VectorXd& y = rhs_;  // b is spent: its room takes y
         if (!system_.solve(left, y)) fail("did not converge (the gate's term)");
+        stats_.iterations += system_.iterations();
         Real ax = 0, ay = 0;
         for (Index c = 0; c < ctx_.grid.cellStride(D - 1); ++c)
             if (!held_[c]) { ax += gateRight_[c] * dp_[c]; ay += gateRight_[c] * y[c]; }
         dp_ -= (gateGamma_ * ax / (1 + gateGamma_ * ay)) * y;
     }
+    for (Index c = 0; c < ctx_.grid.numCells(); ++c)
+        if (held_[c]) dp_[c] = heldValue_[c];
     for (Index c = 0; c < ctx_.grid.numCells(); ++c)
         if (!std::isfinite(dp_[c])) {
             std::ostringstream what;
@@ -286,16 +296,16 @@ bool SemiImplicitIntegrator<D>::updateHeldCells(Real dt) {
         if (!(water.weight[c] > 0)) continue;
         const Real bound = limit(c), p = water.pressure[c];
         if (!held_[c]) {
-            if (p + dp_[c] < bound - kBoundTolerance) {
+            if (p + dp_[c] < bound - boundTolerance(p)) {
                 held_[c] = 1;
-                dp_[c] = bound - p;
+                heldValue_[c] = bound - p;
                 changed = true;
             }
             continue;
         }
         const CavitatingWater pressed =
             pressWater({p, water.cavity[c]}, -KL / water.porosity[c] * dt * cellDivergence(c), KL, bound);
-        if (pressed.pressure > bound + kBoundTolerance) {
+        if (pressed.pressure > bound + boundTolerance(p)) {
             held_[c] = 0;
             changed = true;
         }

@@ -61,6 +61,7 @@ private:
     std::vector<Real> gateWeight_;     ///< per gate node, M_L r_L: its share of the uniform gate's impulse
     std::vector<char> held_;           ///< per cell: its increment is known (no water, or at its bound)
     Eigen::VectorXd rhs_, dp_, gateSolve_, gateLeft_, gateRight_;
+    Eigen::VectorXd heldValue_;        ///< Pa, the known increment of each held cell
     Real gateGamma_ = 0;               ///< dt^2 / (sum M_L + dt R A_wet^2), 0 without a uniform gate
     Real gateDenominator_ = 0;
     int solves_ = 0;                   ///< this step's

@@ -133,6 +133,7 @@ TEST(Resume, ASemiImplicitRunResumesBitIdentically) {
     RunOptions first = quiet;
     first.endTime = 0.5;
     runCase(split, first);
+    ASSERT_TRUE(fs::exists(splitDir / "output/checkpoint.h5"));
     RunOptions resume = quiet;
     resume.resume = true;
     runCase(split, resume);

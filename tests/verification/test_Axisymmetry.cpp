@@ -164,7 +164,7 @@ TEST(Axisymmetry, PoreWaterBreathingModeRingsAtTheBesselFrequency) {
     CaseConfig c = breathingColumn();
     if (c.time.scheme == TimeScheme::SemiImplicit)
         GTEST_SKIP() << "the semi-implicit scheme steps past the water's wave, whose mode this is (its "
-                        "undrained response: CompressionWave.SemiImplicitUndrainedLoadIsCarriedByTheWaterAtOnce)";
+                        "undrained response: CompressionWave.SemiImplicitUndrainedLoadIsCarriedByTheWater)";
     c.initial.rigidSkeleton = true;
     const double cw = std::sqrt(c.liquid.bulkModulus / c.liquid.density);
     const double L1 = c.filterLevel(), L2 = c.sandTop() - L1, n = c.materials.front().porosity;

@@ -61,7 +61,7 @@ std::size_t outputAt(const CaseRun& run, double t) {
 TEST(CompressionWave, UndrainedWaveTravelsAtTheUndrainedSpeed) {
     if (loadVerificationCase("undrained_wave").time.scheme == TimeScheme::SemiImplicit)
         GTEST_SKIP() << "the semi-implicit scheme steps past the water's wave (2.4 cells per step here): "
-                        "SemiImplicitUndrainedLoadIsCarriedByTheWaterAtOnce checks its undrained response";
+                        "SemiImplicitUndrainedLoadIsCarriedByTheWater checks its undrained response";
     const CaseRun run = runVerificationCase("undrained_wave");
     const auto& c = run.config;
     const auto& sand = c.material("sand");

@@ -49,7 +49,6 @@ TEST(TimeSchemes, TheDeltaresColumnIsTheSameWithEitherScheme) {
     const CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/deltaresColumnLumped");
     const CaseRun a = runWith(c, TimeScheme::Explicit, 5.0), b = runWith(c, TimeScheme::SemiImplicit, 5.0);
     ASSERT_EQ(a.series.size(), b.series.size());
-    EXPECT_GT(a.summary.dt / b.summary.dt, 0.0);
     const double stepRatio = b.summary.dt / a.summary.dt;
     EXPECT_GT(stepRatio, 6.0);
     double flux = 0, bed = 0, front = 0, monitor = 0, qMax = 0;
