@@ -27,7 +27,7 @@
 // h -> 0 and zero in a uniform bed. alpha = 0.25, the smallest value that removed the ripples in
 // a 1D study of the kinematics (docs/fluidisation.md). For the paper's sand c = 1.13e-2 m/s at
 // n_max = 0.41; on 6 mm cells D = 1.70e-5 m2/s (tests/unit/physics/test_DragLaw.cpp; the 5.1e-3
-// and 7.6e-6 this comment gave until 2026-12-06 were not what the code computes).
+// and 7.6e-6 this comment gave until 2026-12-05 were not what the code computes).
 #include <algorithm>
 
 #include "core/Types.hpp"

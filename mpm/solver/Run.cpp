@@ -219,12 +219,6 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     ReservoirModel& reservoir = windowed ? static_cast<ReservoirModel&>(*gate) : *builtIn;
     DoublePointSolver<D> solver(config, reservoir);
     if (rotation) rotation->commit();  // everything loaded: the earlier output becomes .previous
-    // the case as run: the file, or with the command line's overrides marked (io/CaseOverride.hpp)
-    if (options.writeFiles && !config.effectiveCase.empty()) {
-        std::ofstream effective(outDir / "case.effective.toml", std::ios::trunc);
-        effective << config.effectiveCase;
-        QS_CHECK(effective.good(), "cannot write " << (outDir / "case.effective.toml").string());
-    }
 
     std::ofstream couplingLog;
     if (windowed && options.writeFiles)
@@ -257,6 +251,14 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
         }
     } else {
         solver.runGravityStage();
+    }
+    // the case as run: the file, or with the command line's overrides marked
+    // (io/CaseOverride.hpp). Written once the checkpoint has loaded: a resume that is refused
+    // (another scheme's checkpoint, say, with --set overrides) leaves the earlier one as it was
+    if (options.writeFiles && !config.effectiveCase.empty()) {
+        std::ofstream effective(outDir / "case.effective.toml", std::ios::trunc);
+        effective << config.effectiveCase;
+        QS_CHECK(effective.good(), "cannot write " << (outDir / "case.effective.toml").string());
     }
 
     std::unique_ptr<SeriesWriter> series;

@@ -140,7 +140,7 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     time_ = data.scalar("time");
     QS_CHECK(std::isfinite(time_) && time_ >= 0, "entry 'time' is " << time_ << kNotThisCase);
     steps_ = static_cast<long>(wholeNumber(data, "steps", 9007199254740992.0));  // 2^53: exact in a double
-    // a checkpoint before 2026-12-06 is the explicit scheme's
+    // a checkpoint without the entry (written before the time-integrator seam) is the explicit scheme's
     const bool semi = data.has("semi_implicit") && data.scalar("semi_implicit") != 0;
     QS_CHECK(semi == (config_.time.scheme == TimeScheme::SemiImplicit),
              "the checkpoint was written by the " << (semi ? "semi-implicit" : "explicit")
