@@ -47,12 +47,10 @@ inline CaseConfig loadVerificationCase(const std::string& name) {
     return c;
 }
 
-/// Runs the case; `edit` may change the loaded config first (e.g. break the physics on purpose).
-inline CaseRun runVerificationCase(const std::string& name,
-                                   const std::function<void(CaseConfig&)>& edit = {}) {
+/// Runs a loaded case in memory, keeping every output.
+inline CaseRun runConfig(const CaseConfig& config) {
     CaseRun run;
-    run.config = loadVerificationCase(name);
-    if (edit) edit(run.config);
+    run.config = config;
     RunOptions options;
     options.quiet = true;
     options.writeFiles = false;
@@ -66,6 +64,14 @@ inline CaseRun runVerificationCase(const std::string& name,
     };
     run.summary = runCase(run.config, options);
     return run;
+}
+
+/// Runs the case; `edit` may change the loaded config first (e.g. break the physics on purpose).
+inline CaseRun runVerificationCase(const std::string& name,
+                                   const std::function<void(CaseConfig&)>& edit = {}) {
+    CaseConfig config = loadVerificationCase(name);
+    if (edit) edit(config);
+    return runConfig(config);
 }
 
 /// Rows holding sand (solid points) and lying fully inside the sand column.

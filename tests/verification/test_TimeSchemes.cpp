@@ -23,23 +23,9 @@ namespace {
 bool inSemiImplicitBinary() { return std::string(defaultTestScheme()) == "semi_implicit"; }
 
 CaseRun runWith(CaseConfig config, TimeScheme scheme, double end) {
-    CaseRun run;
     config.time.scheme = scheme;
     config.time.end = end;
-    run.config = config;
-    RunOptions options;
-    options.quiet = true;
-    options.writeFiles = false;
-    options.onOutput = [&](const ColumnState& s, const std::vector<CellRow>& rows) {
-        run.series.push_back(s);
-        run.profiles.push_back(rows);
-    };
-    options.onPipes = [&](double, const SandCells& cells, const PipeSurvey& survey) {
-        run.cells.push_back(cells);
-        run.pipes.push_back(survey);
-    };
-    run.summary = runCase(run.config, options);
-    return run;
+    return runConfig(config);
 }
 
 }  // namespace
