@@ -18,7 +18,9 @@
 #                                      with real water (K_L = 2.2 GPa) to 10 s; dt, steps, wall time
 #                                      and the ratios, and the semi-implicit pressure solve's share.
 #                                      Then BM_Pressure2D/3D: the solve alone, 1e3 to 1e5 cells,
-#                                      Eigen's sparse Cholesky against CG with incomplete Cholesky.
+#                                      Eigen's sparse Cholesky against CG with incomplete Cholesky,
+#                                      and BM_PressureAMG2D/3D: CG with hypre's BoomerAMG, 1e3 to
+#                                      1e6 cells (where hypre is installed).
 #                                      About 20 minutes (SCHEMES_END=10 for 10 s runs in 1D)
 # Speed is measured here, never by timed tests.
 set -euo pipefail
@@ -84,7 +86,8 @@ for label, r in by.items():
     (se, we), (ss, ws) = r["explicit"], r["semi_implicit"]
     print(f"{label}: semi-implicit step {se / ss:.2f} x the explicit one, wall time {we / ws:.2f} x shorter")
 PY
-    echo "== the pressure solve alone (BM_Pressure2D/3D: cells per axis / 1 direct, 2 CG; real water)"
+    echo "== the pressure solve alone (BM_Pressure2D/3D: cells per axis / 1 direct, 2 CG;"
+    echo "   BM_PressureAMG2D/3D: cells per axis / 1 AMG set up each solve, 0 set up once; real water)"
     OMP_NUM_THREADS=1 "$build_dir/tools/benchmarks/quicksand_benchmarks" --benchmark_filter='BM_Pressure' \
         2>&1 | grep -E '^(BM_|---|Benchmark)' || true
     exit 0

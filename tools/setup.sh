@@ -2,7 +2,8 @@
 # Installs the system packages quicksand needs to build, test and plot (Debian/Ubuntu, apt-get).
 #
 #   bash tools/setup.sh              compiler, CMake, Eigen, HDF5, toml++, GoogleTest/Mock,
-#                                    Google Benchmark, Python plotting
+#                                    Google Benchmark, hypre (its AMG is benchmarked against the
+#                                    pressure solvers), Python plotting
 #   bash tools/setup.sh --fuzz       the same plus clang with libFuzzer and OpenMP (tests/fuzz)
 #   bash tools/setup.sh --openfoam   the same plus Debian's `openfoam` package (OpenFOAM reservoir),
 #                                    its tutorials (`openfoam-examples`)
@@ -18,7 +19,7 @@ set -euo pipefail
 usage() { sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 packages=(cmake g++ make pkg-config libeigen3-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev
-          libgtest-dev libgmock-dev libbenchmark-dev
+          libgtest-dev libgmock-dev libbenchmark-dev libhypre-dev
           python3-matplotlib python3-numpy python3-h5py)
 with_openfoam=false
 for arg in "$@"; do

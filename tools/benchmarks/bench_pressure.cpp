@@ -10,40 +10,9 @@
 // SimplicialLDLT; 2: conjugate gradients with IncompleteCholesky. Counters: cells, iterations.
 #include <benchmark/benchmark.h>
 
-#include <cmath>
-
-#include "grid/Grid.hpp"
-#include "solver/PressureSystem.hpp"
+#include "SandSystem.hpp"
 
 namespace {
-
-template <int D>
-void fillSandSystem(const qs::Grid<D>& grid, qs::PressureSystem& system, Eigen::VectorXd& b) {
-    const double h = grid.h(), n = 0.4, K = 2.2e9, rho = 2000.0, dt = 0.4 * h / 28.6;
-    const double V = std::pow(h, D);
-    for (qs::Index c = 0; c < grid.numCells(); ++c) {
-        double* value = system.values(c);
-        for (qs::Index k = 0; k < system.size(c); ++k) value[k] = 0;
-        grid.forEachNodeOfCell(c, [&](qs::Index i, int corner) {
-            int cellsOfNode = 0;
-            grid.forEachCellOfNode(i, [&](qs::Index, int) { ++cellsOfNode; });
-            const double beta = 1 / (rho * V * cellsOfNode / (1 << D));
-            for (int a = 0; a < D; ++a) {
-                const double Dc = V * grid.divergenceWeight(c, corner, a);
-                grid.forEachCellOfNode(i, [&](qs::Index c2, int corner2) {
-                    int offset[D];
-                    for (int d = 0; d < D; ++d) offset[d] = ((corner >> d) & 1) - ((corner2 >> d) & 1);
-                    value[system.slot(c, qs::PressureSystem::offsetCode(offset, D))] +=
-                        dt * dt * beta * (Dc * (V * grid.divergenceWeight(c2, corner2, a)));
-                });
-            }
-        });
-        const int centre[D] = {};
-        value[system.slot(c, qs::PressureSystem::offsetCode(centre, D))] += V * n / K;
-        const qs::IVec<D> cc = grid.cellCoords(c);
-        b[c] = std::sin(0.37 * static_cast<double>(cc[0])) + 0.5 * std::cos(0.11 * static_cast<double>(cc[D - 1]));
-    }
-}
 
 template <int D>
 void BM_Pressure(benchmark::State& state) {
@@ -53,7 +22,7 @@ void BM_Pressure(benchmark::State& state) {
     qs::PressureSystem system;
     system.build(grid, state.range(1) == 1 ? qs::PressureSolver::Direct : qs::PressureSolver::ConjugateGradient);
     Eigen::VectorXd b(grid.numCells()), x(grid.numCells());
-    fillSandSystem(grid, system, b);
+    qs::bench::fillSandSystem(grid, system, b);
     system.factorize();  // the direct solver's symbolic analysis, once per run
     for (auto _ : state) {
         system.factorize();

@@ -150,5 +150,3 @@ void BM_StepSynchronisation(benchmark::State& state) {
 BENCHMARK(BM_StepSynchronisation)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond);
 
 }  // namespace
-
-BENCHMARK_MAIN();
