@@ -39,6 +39,24 @@ Real waterBetween(const Grid<D>& grid, const LiquidPoints<D>& liquid, Index from
     return water;
 }
 
+/// m3, the grains the solid points [from, to) put between zLow and zHigh. A point's mixture spans
+/// z +- V / (2 a), a its footprint, as a liquid point's water does in waterBetween, and (1 - n)
+/// of it is grains. Sand in the rows under the rim takes room that no water can fill: the rows
+/// lack water only where neither water nor grains are.
+template <int D>
+Real grainsBetween(const Grid<D>& grid, const SolidPoints<D>& solid, Index from, Index to, Real zLow, Real zHigh,
+                   int pointsPerCell) {
+    Real grains = 0;
+    for (Index p = from; p < to; ++p) {
+        const Real z = solid.x[p * D + D - 1];
+        const Real area = grid.pointFootprint(&solid.x[p * D], pointsPerCell);
+        const Real half = 0.5 * solid.volume[p] / area;
+        const Real inside = std::min(z + half, zHigh) - std::max(z - half, zLow);
+        if (inside > 0) grains += (1 - solid.porosity[p]) * area * inside;
+    }
+    return grains;
+}
+
 /// rows of water the rows under the rim lack before the weir holds crest water back
 /// (spillOverRim)
 constexpr Real kWeirHoldsFrom = 0.5;
@@ -59,11 +77,11 @@ constexpr Real kWeirHoldsFrom = 0.5;
 /// surface spills as before and every verification test keeps its figures, and it is half the
 /// way to the run's stop at a row (solver/PointsToGrid.cpp).
 /// The rows measured are the `rows` rows of cells under the rim, their water from the points
-/// from index `from` on. Returns the volume of water spilled (m3); `drop` and `order` are the
+/// from index `from` on, less `grains` (m3, grainsBetween), the sand's share of them. Returns the volume of water spilled (m3); `drop` and `order` are the
 /// caller's scratch.
 template <int D>
-Real spillOverRim(const Grid<D>& grid, Index rimRow, Index rows, Index from, int pointsPerCell, Real density,
-                  LiquidPoints<D>& liquid, std::vector<char>& drop, std::vector<Index>& order) {
+Real spillOverRim(const Grid<D>& grid, Index rimRow, Index rows, Index from, Real grains, int pointsPerCell,
+                  Real density, LiquidPoints<D>& liquid, std::vector<char>& drop, std::vector<Index>& order) {
     const Index n = static_cast<Index>(liquid.size());
     const Real h = grid.h(), zRim = rimRow * h;
     auto z = [&](Index p) { return liquid.x[p * D + D - 1]; };
@@ -77,7 +95,7 @@ Real spillOverRim(const Grid<D>& grid, Index rimRow, Index rows, Index from, int
     Real room = 0;
     for (Index c = lowRow * up; c < rimRow * up; ++c) room += grid.cellVolume(c);
     const Real lacking =
-        room - waterBetween(grid, liquid, std::min(from, first), n, lowRow * h, zRim, pointsPerCell, zRim);
+        room - grains - waterBetween(grid, liquid, std::min(from, first), n, lowRow * h, zRim, pointsPerCell, zRim);
     const Real hold = lacking - kWeirHoldsFrom * room / static_cast<Real>(rimRow - lowRow);
 
     order.clear();

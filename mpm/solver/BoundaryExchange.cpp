@@ -32,9 +32,13 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
         // the points that began the step two rows under the measured rows or above: a point
         // moves less than a cell in a step, and its water spans up to a cell about its centre
         const Index up = grid_.cellStride(D - 1);
-        const Index from = cells_.liquidStart[std::max<Index>(overflowRow_ - kRimRows - 2, 0) * up];
-        const Real out = spillOverRim(grid_, overflowRow_, kRimRows, from, config_.points.liquidPerCell,
-                                      config_.liquid.density, liquid_, dropFlags_, spillOrder_);
+        const Index lowCell = std::max<Index>(overflowRow_ - kRimRows - 2, 0) * up;
+        const Index lowRow = std::max<Index>(overflowRow_ - kRimRows, 0);
+        const Real grains = grainsBetween(grid_, solid_, cells_.solidStart[lowCell], static_cast<Index>(solid_.size()),
+                                          lowRow * grid_.h(), zOver, config_.points.solidPerCell);
+        const Real out = spillOverRim(grid_, overflowRow_, kRimRows, cells_.liquidStart[lowCell], grains,
+                                      config_.points.liquidPerCell, config_.liquid.density, liquid_, dropFlags_,
+                                      spillOrder_);
         if (out > 0) {
             outflowVolume_ += out;
             // the cell lists are stale now: rebuilt for what reads them between steps (the weights

@@ -100,10 +100,16 @@ void DoublePointSolver<D>::classifyCells() {
         // into them (the weir holds crest water there, straddling the rim)
         const Index from = lowRow >= 1 ? (lowRow - 1) * up : first;
         const Index to = std::min(last + up, nc);
-        const Real water = waterBetween(grid_, liquid_, cells_.liquidStart[from], cells_.liquidStart[to],
-                                        lowRow * grid_.h(), overflowRow_ * grid_.h(), config_.points.liquidPerCell);
+        const Real zLow = lowRow * grid_.h(), zRim = overflowRow_ * grid_.h();
+        const Real water = waterBetween(grid_, liquid_, cells_.liquidStart[from], cells_.liquidStart[to], zLow, zRim,
+                                        config_.points.liquidPerCell);
+        // a bed risen into these rows fills them with grains and the water in its pores: the
+        // rows are full (counting water alone stopped a boil reaching the rim, and the 2D
+        // Deltares column on 9.3 mm cells, its expanded bed two rows under the rim)
+        const Real grains = grainsBetween(grid_, solid_, cells_.solidStart[from], cells_.solidStart[to], zLow, zRim,
+                                          config_.points.solidPerCell);
         const Real rowsMeasured = static_cast<Real>(overflowRow_ - lowRow);
-        const Real missing = std::max(Real(0), room - water) / room * rowsMeasured;  // in rows
+        const Real missing = std::max(Real(0), room - grains - water) / room * rowsMeasured;  // in rows
         QS_CHECK(missing <= 1,
                  "the water fell below the overflow level column.overflow_level = "
                      << *config_.column.overflowLevel << " m at t = " << time_ << " s: the top "

@@ -66,6 +66,32 @@ inline CaseRun runConfig(const CaseConfig& config) {
     return run;
 }
 
+/// Runs a loaded 2D/3D case in memory until `seen` holds for the cells' sand state at an output,
+/// or to its end. A test that measures when something first happens stops watching there: what
+/// the run does afterwards (a pipe blowing out over the rim) neither costs time nor ends it.
+inline CaseRun runConfigUntil(const CaseConfig& config, const std::function<bool(const SandCells&)>& seen) {
+    struct Seen {};
+    CaseRun run;
+    run.config = config;
+    RunOptions options;
+    options.quiet = true;
+    options.writeFiles = false;
+    options.onPipes = [&](double, const SandCells& cells, const PipeSurvey& survey) {
+        run.cells.push_back(cells);
+        run.pipes.push_back(survey);
+    };
+    options.onOutput = [&](const ColumnState& s, const std::vector<CellRow>& rows) {  // after onPipes
+        run.series.push_back(s);
+        run.profiles.push_back(rows);
+        if (!run.cells.empty() && seen(run.cells.back())) throw Seen{};
+    };
+    try {
+        run.summary = runCase(run.config, options);
+    } catch (const Seen&) {
+    }
+    return run;
+}
+
 /// Runs the case; `edit` may change the loaded config first (e.g. break the physics on purpose).
 inline CaseRun runVerificationCase(const std::string& name,
                                    const std::function<void(CaseConfig&)>& edit = {}) {

@@ -9,6 +9,7 @@
 #include "boundary/Overflow.hpp"
 #include "grid/Grid.hpp"
 #include "points/LiquidPoints.hpp"
+#include "points/SolidPoints.hpp"
 
 using namespace qs;
 
@@ -25,6 +26,7 @@ struct Column {
     LiquidPoints<2> liquid;
     std::vector<char> drop;
     std::vector<Index> order;
+    double grains = 0;  // m3, the sand's grains in the two rows under the rim
 
     void add(double x, double z, double size = 1.0) {
         const double V = size * kH * kH / (kPerCell * kPerCell);
@@ -47,7 +49,7 @@ struct Column {
         for (int k = 0; k < layers; ++k)
             layer((k + 0.5) * kH / kPerCell, 0, k >= layers - trough ? kColumns * kPerCell / 2 : kColumns * kPerCell);
     }
-    double spill() { return spillOverRim(grid, kRimRow, 2, 0, kPerCell, kRho, liquid, drop, order); }
+    double spill() { return spillOverRim(grid, kRimRow, 2, 0, grains, kPerCell, kRho, liquid, drop, order); }
     double pointWater() const { return kH * kH / (kPerCell * kPerCell); }
     int countAbove(double z) const {
         int n = 0;
@@ -134,4 +136,31 @@ TEST(OverflowWeir, WaterBelowTheRimAfterTheSpilledPointsStaysInOrder) {
     ASSERT_EQ(c.liquid.size(), before - 2 * kHalf);
     EXPECT_EQ(c.liquid.x[2 * (c.liquid.size() - 2) + 1], 0.001);
     EXPECT_EQ(c.liquid.x[2 * (c.liquid.size() - 1) + 1], 0.002);
+}
+
+// A bed risen to the rim (a boil's sand, an expanded bed): its grains fill the rows the water does
+// not, so the rows lack nothing and a crest over them spills as over a level surface. Counted as
+// lacking water, the rows under a sand of n = 0.625 read 0.75 rows short and the weir held a layer
+// of crest water above the rim, where no water stands on the grid.
+TEST(OverflowWeir, SandRisenToTheRimLeavesNoRoomForCrestWater) {
+    const double n = 0.625;
+    Column c;
+    SolidPoints<2> sand;
+    for (int k = 0; k < kRimRow * kPerCell; ++k) {
+        const bool inSand = k >= (kRimRow - 2) * kPerCell;  // the two rows under the rim
+        for (int i = 0; i < kColumns * kPerCell; ++i) {
+            const double x = (i + 0.5) * kH / kPerCell, z = (k + 0.5) * kH / kPerCell;
+            c.add(x, z, inSand ? n : 1.0);  // the water in the sand's pores
+            if (!inSand) continue;
+            sand.x.insert(sand.x.end(), {x, z});
+            sand.volume.push_back(kH * kH / (kPerCell * kPerCell));
+            sand.porosity.push_back(n);
+        }
+    }
+    c.grains = grainsBetween(c.grid, sand, 0, static_cast<Index>(sand.porosity.size()), kRim - 2 * kH, kRim, kPerCell);
+    EXPECT_NEAR(c.grains, 2 * (1 - n) * kColumns * kH * kH, 1e-15);  // 0.75 rows of grains
+    c.layer(kRim + kH / 4, 0, kHalf);  // a crest of two layers over the left half
+    c.layer(kRim + 3 * kH / 4, 0, kHalf);
+    EXPECT_NEAR(c.spill(), 2 * kHalf * c.pointWater(), 1e-15);
+    EXPECT_EQ(c.countAbove(kRim), 0);
 }
