@@ -39,4 +39,21 @@ void fillSandSystem(const Grid<D>& grid, PressureSystem& system, Eigen::VectorXd
     }
 }
 
+/// A square (cube) of n^D cells of 6.2 mm and its system, assembled for `solver`, with b.
+template <int D>
+struct SandSquare {
+    Grid<D> grid;
+    PressureSystem system;
+    Eigen::VectorXd b;
+    SandSquare(Index n, PressureSolver solver) : grid(cellsPerAxis(n), 0.0062, 0.005), b(grid.numCells()) {
+        system.build(grid, solver);
+        fillSandSystem(grid, system, b);
+    }
+    static IVec<D> cellsPerAxis(Index n) {
+        IVec<D> cells;
+        for (int d = 0; d < D; ++d) cells[d] = n;
+        return cells;
+    }
+};
+
 }  // namespace qs::bench

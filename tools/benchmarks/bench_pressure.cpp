@@ -16,13 +16,12 @@ namespace {
 
 template <int D>
 void BM_Pressure(benchmark::State& state) {
-    qs::IVec<D> cells;
-    for (int d = 0; d < D; ++d) cells[d] = state.range(0);
-    const qs::Grid<D> grid(cells, 0.0062, 0.005);
-    qs::PressureSystem system;
-    system.build(grid, state.range(1) == 1 ? qs::PressureSolver::Direct : qs::PressureSolver::ConjugateGradient);
-    Eigen::VectorXd b(grid.numCells()), x(grid.numCells());
-    qs::bench::fillSandSystem(grid, system, b);
+    qs::bench::SandSquare<D> square(state.range(0), state.range(1) == 1 ? qs::PressureSolver::Direct
+                                                                        : qs::PressureSolver::ConjugateGradient);
+    const qs::Grid<D>& grid = square.grid;
+    qs::PressureSystem& system = square.system;
+    const Eigen::VectorXd& b = square.b;
+    Eigen::VectorXd x(grid.numCells());
     system.factorize();  // the direct solver's symbolic analysis, once per run
     for (auto _ : state) {
         system.factorize();

@@ -122,20 +122,15 @@ private:
 
 template <int D>
 void BM_PressureAMG(benchmark::State& state) {
-    qs::IVec<D> cells;
-    for (int d = 0; d < D; ++d) cells[d] = state.range(0);
-    const qs::Grid<D> grid(cells, 0.0062, 0.005);
-    qs::PressureSystem system;
-    system.build(grid, qs::PressureSolver::ConjugateGradient);
-    Eigen::VectorXd b(grid.numCells());
-    qs::bench::fillSandSystem(grid, system, b);
+    qs::bench::SandSquare<D> square(state.range(0), qs::PressureSolver::ConjugateGradient);
+    const qs::Grid<D>& grid = square.grid;
     AmgSystem amg(static_cast<HYPRE_Int>(grid.numCells()));
     const bool everyStep = state.range(1) == 1;
-    amg.load(system, b);
+    amg.load(square.system, square.b);
     amg.setup(D);
     for (auto _ : state) {
         if (everyStep) {
-            amg.load(system, b);
+            amg.load(square.system, square.b);
             amg.setup(D);
         }
         if (!amg.solve()) state.SkipWithError("CG with BoomerAMG did not reach its tolerance");
