@@ -69,7 +69,7 @@ bool PressureSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
         iterations_ = 0;
         return ldlt_.info() == Eigen::Success && x.allFinite();
     }
-    x = cg_.solve(b);
+    x = cg_.solveWithGuess(b, x);
     iterations_ = static_cast<int>(cg_.iterations());
     error_ = cg_.error();
     return cg_.info() == Eigen::Success && x.allFinite();

@@ -50,7 +50,8 @@ public:
     /// Factorises (Direct) or preconditions (CG) the values written. False if it fails.
     bool factorize();
     /// x = A^-1 b with the last factorisation; false if the solver fails or does not reach its
-    /// tolerance.
+    /// tolerance. CG starts from x as it comes in (the caller's guess: the last step's solution,
+    /// or zeros); the direct solver does not read it.
     bool solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
     bool direct() const { return direct_; }

@@ -27,10 +27,28 @@ SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context)
     for (auto* a : {&predS_, &predL_, &incL_, &rS_, &rL_, &force_}) a->assign(nn * D, 0.0);
     held_.assign(nc, 0);
     gateWeight_.assign(ctx_.masks.gateNodes.size(), 0.0);
-    for (auto* v : {&rhs_, &dp_, &heldValue_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
+    for (auto* v : {&rhs_, &dp_, &gateY_, &heldValue_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
     system_.build(ctx_.grid, ctx_.config.time.pressureSolver);
     stats_.solver = system_.direct() ? "sparse Cholesky (Eigen SimplicialLDLT)"
                                      : "conjugate gradients, incomplete Cholesky (Eigen)";
+}
+
+// CG's starting guesses, dp and y, one after the other
+template <int D>
+std::vector<double> SemiImplicitIntegrator<D>::saveState() const {
+    std::vector<double> state(dp_.data(), dp_.data() + dp_.size());
+    state.insert(state.end(), gateY_.data(), gateY_.data() + gateY_.size());
+    return state;
+}
+
+template <int D>
+void SemiImplicitIntegrator<D>::restoreState(const std::vector<double>& state) {
+    const Index nc = ctx_.grid.numCells();
+    QS_CHECK(static_cast<Index>(state.size()) == 2 * nc,
+             "entry 'integrator' holds " << state.size() << " values, the semi-implicit step's state on this grid "
+                                         << 2 * nc << ": a checkpoint of another case or grid");
+    dp_ = Eigen::Map<const Eigen::VectorXd>(state.data(), nc);
+    gateY_ = Eigen::Map<const Eigen::VectorXd>(state.data() + nc, nc);
 }
 
 template <int D>
@@ -203,6 +221,9 @@ void SemiImplicitIntegrator<D>::solve(Real dt, Real time) {
         throw Error(s.str());
     };
     if (!system_.factorize()) fail("could not factorise the matrix (not positive definite)");
+    // CG starts from the last solution; a held cell's row is the identity with a zero right-hand side
+    for (Index c = 0; c < ctx_.grid.numCells(); ++c)
+        if (held_[c]) dp_[c] = 0;
     if (!system_.solve(rhs_, dp_)) fail("did not converge");
     stats_.iterations += system_.iterations();
     if (gateGamma_ > 0) {
@@ -211,7 +232,9 @@ void SemiImplicitIntegrator<D>::solve(Real dt, Real time) {
         left = gateLeft_;
         for (Index c = 0; c < ctx_.grid.cellStride(D - 1); ++c)
             if (held_[c]) left[c] = 0;
-        Eigen::VectorXd& y = rhs_;  // b is spent: its room takes y
+        Eigen::VectorXd& y = gateY_;
+        for (Index c = 0; c < ctx_.grid.numCells(); ++c)
+            if (held_[c]) y[c] = 0;
         if (!system_.solve(left, y)) fail("did not converge (the gate's term)");
         stats_.iterations += system_.iterations();
         Real ax = 0, ay = 0;

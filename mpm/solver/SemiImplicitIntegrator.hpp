@@ -41,6 +41,8 @@ public:
     TimeScheme scheme() const override { return TimeScheme::SemiImplicit; }
     Real solveVelocities(const StepInputs& in, Real time) override;
     IntegratorStats stats() const override { return stats_; }
+    std::vector<double> saveState() const override;
+    void restoreState(const std::vector<double>& state) override;
 
 private:
     void nodeResponse(const StepInputs& in);
@@ -60,7 +62,10 @@ private:
     std::vector<Real> force_;          ///< [D] N, D^T dp: the increment's force on the mixture
     std::vector<Real> gateWeight_;     ///< per gate node, M_L r_L: its share of the uniform gate's impulse
     std::vector<char> held_;           ///< per cell: its increment is known (no water, or at its bound)
-    Eigen::VectorXd rhs_, dp_, gateSolve_, gateLeft_, gateRight_;
+    Eigen::VectorXd rhs_, gateSolve_, gateLeft_, gateRight_;
+    /// Pa, the increment; and y = A^-1 a_L, the gate's term (Sherman-Morrison). Kept over steps:
+    /// CG starts from the last step's (pass's) solution, which the next differs from little.
+    Eigen::VectorXd dp_, gateY_;
     Eigen::VectorXd heldValue_;        ///< Pa, the known increment of each held cell
     Real gateGamma_ = 0;               ///< dt^2 / (sum M_L + dt R A_wet^2), 0 without a uniform gate
     Real gateDenominator_ = 0;

@@ -16,6 +16,7 @@
 // The scheme is chosen in case.toml, time.scheme; the step's size follows from it
 // (solver/RunSize.hpp, timeStep).
 #include <memory>
+#include <vector>
 
 #include "boundary/BoundaryMasks.hpp"
 #include "grid/Grid.hpp"
@@ -77,6 +78,12 @@ public:
     /// (a pressure solve that fails), naming the time and the cell.
     virtual Real solveVelocities(const StepInputs& in, Real time) = 0;
     virtual IntegratorStats stats() const { return {}; }
+    /// What the scheme carries from one step to the next (the semi-implicit step's starting
+    /// guesses for CG), for the checkpoint: a run resumed from it takes the same steps as the run
+    /// that wrote it. Empty for a scheme that carries nothing.
+    virtual std::vector<double> saveState() const { return {}; }
+    /// Throws qs::Error if `state` is not one this scheme wrote for this grid.
+    virtual void restoreState(const std::vector<double>& state) { (void)state; }
 };
 
 template <int D>
