@@ -9,7 +9,8 @@
 //
 // The solvers are Eigen's (no hand-written linear algebra):
 //   - Direct: SimplicialLDLT, a sparse Cholesky factorisation with an AMD ordering;
-//   - ConjugateGradient: CG with an incomplete-Cholesky preconditioner (IncompleteCholesky).
+//   - ConjugateGradient: CG with an incomplete-Cholesky preconditioner (IncompleteCholesky),
+//     started from the caller's guess (the semi-implicit step passes its last solution).
 // docs/performance.md, "The pressure solve alone", measures both; PressureSolver::Automatic
 // takes the direct one in 1D and 2D, and in 3D up to kDirectCellLimit3D cells, CG beyond.
 #include <Eigen/IterativeLinearSolvers>
