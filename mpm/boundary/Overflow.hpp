@@ -76,9 +76,9 @@ constexpr Real kWeirHoldsFrom = 0.5;
 /// (free-water points are h / 7 tall in piping2D; a suspension's grow to 0.83 h), so a level
 /// surface spills as before and every verification test keeps its figures, and it is half the
 /// way to the run's stop at a row (solver/PointsToGrid.cpp).
-/// The rows measured are the `rows` rows of cells under the rim, their water from the points
-/// from index `from` on, less `grains` (m3, grainsBetween), the sand's share of them. Returns the volume of water spilled (m3); `drop` and `order` are the
-/// caller's scratch.
+/// The rows measured are the `rows` rows of cells under the rim: their water from the points
+/// from index `from` on, and `grains` (m3, grainsBetween) the sand's share of them. Returns the
+/// volume of water spilled (m3); `drop` and `order` are the caller's scratch.
 template <int D>
 Real spillOverRim(const Grid<D>& grid, Index rimRow, Index rows, Index from, Real grains, int pointsPerCell,
                   Real density, LiquidPoints<D>& liquid, std::vector<char>& drop, std::vector<Index>& order) {
