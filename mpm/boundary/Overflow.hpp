@@ -21,39 +21,38 @@
 
 namespace qs {
 
+/// m3, the volume V of a point at x (its footprint a = grid.pointFootprint) spans between zLow and
+/// zHigh: the point spans z +- V / (2 a) upwards, and counts by the part of that span inside.
+template <int D>
+Real volumeBetween(const Grid<D>& grid, const Real* x, Real V, int pointsPerCell, Real zLow, Real zHigh) {
+    const Real z = x[D - 1], area = grid.pointFootprint(x, pointsPerCell), half = 0.5 * V / area;
+    const Real inside = std::min(z + half, zHigh) - std::max(z - half, zLow);
+    return inside > 0 ? area * inside : 0;
+}
+
 /// m3, the water the liquid points [from, to) whose centres lie at or below zCentreMax put between
-/// zLow and zHigh. A point's water spans z +- V / (2 a), a its footprint, and counts by the part
-/// of that span inside.
+/// zLow and zHigh (volumeBetween: a point's water spans z +- V / (2 a)).
 template <int D>
 Real waterBetween(const Grid<D>& grid, const LiquidPoints<D>& liquid, Index from, Index to, Real zLow, Real zHigh,
                   int pointsPerCell, Real zCentreMax = std::numeric_limits<Real>::infinity()) {
     Real water = 0;
-    for (Index p = from; p < to; ++p) {
-        const Real z = liquid.x[p * D + D - 1];
-        if (z > zCentreMax) continue;
-        const Real area = grid.pointFootprint(&liquid.x[p * D], pointsPerCell);
-        const Real half = 0.5 * liquid.volume[p] / area;
-        const Real inside = std::min(z + half, zHigh) - std::max(z - half, zLow);
-        if (inside > 0) water += area * inside;
-    }
+    for (Index p = from; p < to; ++p)
+        if (liquid.x[p * D + D - 1] <= zCentreMax)
+            water += volumeBetween(grid, &liquid.x[p * D], liquid.volume[p], pointsPerCell, zLow, zHigh);
     return water;
 }
 
-/// m3, the grains the solid points [from, to) put between zLow and zHigh. A point's mixture spans
-/// z +- V / (2 a), a its footprint, as a liquid point's water does in waterBetween, and (1 - n)
-/// of it is grains. Sand in the rows under the rim takes room that no water can fill: the rows
-/// lack water only where neither water nor grains are.
+/// m3, the grains the solid points [from, to) put between zLow and zHigh: a point's mixture spans
+/// z +- V / (2 a) (volumeBetween), as a liquid point's water does, and (1 - n) of it is grains.
+/// Sand in the rows under the rim takes room that no water can fill: the rows lack water only
+/// where neither water nor grains are.
 template <int D>
 Real grainsBetween(const Grid<D>& grid, const SolidPoints<D>& solid, Index from, Index to, Real zLow, Real zHigh,
                    int pointsPerCell) {
     Real grains = 0;
-    for (Index p = from; p < to; ++p) {
-        const Real z = solid.x[p * D + D - 1];
-        const Real area = grid.pointFootprint(&solid.x[p * D], pointsPerCell);
-        const Real half = 0.5 * solid.volume[p] / area;
-        const Real inside = std::min(z + half, zHigh) - std::max(z - half, zLow);
-        if (inside > 0) grains += (1 - solid.porosity[p]) * area * inside;
-    }
+    for (Index p = from; p < to; ++p)
+        grains += (1 - solid.porosity[p]) *
+                  volumeBetween(grid, &solid.x[p * D], solid.volume[p], pointsPerCell, zLow, zHigh);
     return grains;
 }
 

@@ -47,28 +47,10 @@ inline CaseConfig loadVerificationCase(const std::string& name) {
     return c;
 }
 
-/// Runs a loaded case in memory, keeping every output.
-inline CaseRun runConfig(const CaseConfig& config) {
-    CaseRun run;
-    run.config = config;
-    RunOptions options;
-    options.quiet = true;
-    options.writeFiles = false;
-    options.onOutput = [&](const ColumnState& s, const std::vector<CellRow>& rows) {
-        run.series.push_back(s);
-        run.profiles.push_back(rows);
-    };
-    options.onPipes = [&](double, const SandCells& cells, const PipeSurvey& survey) {
-        run.cells.push_back(cells);
-        run.pipes.push_back(survey);
-    };
-    run.summary = runCase(run.config, options);
-    return run;
-}
-
-/// Runs a loaded 2D/3D case in memory until `seen` holds for the cells' sand state at an output,
-/// or to its end. A test that measures when something first happens stops watching there: what
-/// the run does afterwards (a pipe blowing out over the rim) neither costs time nor ends it.
+/// Runs a loaded case in memory, keeping every output. With `seen` (2D/3D), only until it holds
+/// for the cells' sand state at an output: a test that measures when something first happens
+/// stops watching there, and what the run does afterwards (a pipe blowing out over the rim)
+/// neither costs time nor ends it.
 inline CaseRun runConfigUntil(const CaseConfig& config, const std::function<bool(const SandCells&)>& seen) {
     struct Seen {};
     CaseRun run;
@@ -83,7 +65,7 @@ inline CaseRun runConfigUntil(const CaseConfig& config, const std::function<bool
     options.onOutput = [&](const ColumnState& s, const std::vector<CellRow>& rows) {  // after onPipes
         run.series.push_back(s);
         run.profiles.push_back(rows);
-        if (!run.cells.empty() && seen(run.cells.back())) throw Seen{};
+        if (seen && !run.cells.empty() && seen(run.cells.back())) throw Seen{};
     };
     try {
         run.summary = runCase(run.config, options);
@@ -91,6 +73,9 @@ inline CaseRun runConfigUntil(const CaseConfig& config, const std::function<bool
     }
     return run;
 }
+
+/// Runs a loaded case in memory to its end, keeping every output.
+inline CaseRun runConfig(const CaseConfig& config) { return runConfigUntil(config, {}); }
 
 /// Runs the case; `edit` may change the loaded config first (e.g. break the physics on purpose).
 inline CaseRun runVerificationCase(const std::string& name,
