@@ -75,6 +75,7 @@ void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver, const 
                                            {"porosity", s.porosity.data(), 1},
                                            {"effective_stress", s.stress.data(), 6},
                                            {"volume", s.volume.data(), 1},
+                                           {"mass", s.mass.data(), 1},
                                            {"state", sState.data(), 1},
                                            {"stress_return", sReturn.data(), 1}};
     // the constitutive models' state variables (Mohr-Coulomb: equivalent plastic strain,
@@ -85,6 +86,7 @@ void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver, const 
                          {{"velocity", l.v.data(), D, FieldKind::Vector},
                           {"pore_pressure", l.pressure.data(), 1},
                           {"volume", l.volume.data(), 1},
+                          {"mass", l.mass.data(), 1},
                           {"cavity", l.cavity.data(), 1},
                           {"state", lState.data(), 1}});
     if (cells) writeCells(writer, solver.grid(), *cells);
