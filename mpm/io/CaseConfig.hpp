@@ -14,6 +14,7 @@
 //   sand top   -- filter + sum of layer thicknesses
 //   filter     -- the permeable gate: solid held, liquid passes (= chamber height)
 //   0          -- chamber bottom: the gate pressure acts here on the liquid
+#include <cmath>
 #include <optional>
 #include <cstdint>
 #include <string>
@@ -130,6 +131,11 @@ struct LiquidConfig {
     double freeSurfaceFilling = 0.9;   ///< -, filling ratio below which a top cell is free surface
     bool gridLiquidMass = true;        ///< nodal liquid mass rho_L n_i V_i below the free surface
     double picShare = 0.0;             ///< -, share of the grid's velocity (PIC) in the liquid points' each step
+    /// s, the blend's damping time T instead of a share per step: alpha = 1 - exp(-dt / T), the
+    /// same damping per second whatever the step (0: pic_share holds)
+    double picDampingTime = 0.0;
+    /// -, the blend's share in a step of dt
+    double picShareFor(double dt) const { return picDampingTime > 0 ? -std::expm1(-dt / picDampingTime) : picShare; }
 };
 
 struct PointsConfig {

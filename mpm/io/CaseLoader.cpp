@@ -65,7 +65,8 @@ constexpr const char* kLiquidKeys[] = {"density",
                                        "free_surface_zero_pressure",
                                        "free_surface_filling",
                                        "grid_liquid_mass",
-                                       "pic_share"};
+                                       "pic_share",
+                                       "pic_damping_time"};
 constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
 constexpr const char* kInitialKeys[] = {"state", "stress", "rigid_skeleton", "filter_velocity", "undrained_surcharge",
                                         "gravity_stage_duration", "gravity_stage_damping", "porosity_field"};
@@ -309,6 +310,15 @@ private:
         l.gridLiquidMass = s.boolean("grid_liquid_mass", true);
         l.picShare = s.optionalNumber("pic_share", 0.0, between(0, false, 0.5, false),
                                       "a share per step: 0 (FLIP, the verified default) to 0.5; 0.01 is usual");
+        if (s.has("pic_damping_time")) {
+            if (s.has("pic_share"))
+                s.fail("pic_damping_time",
+                       "set either pic_share (a share per step) or pic_damping_time (s), not both: they are "
+                       "two ways to give the same blend");
+            l.picDampingTime = s.optionalNumber("pic_damping_time", 0.0, positive("s"),
+                                                "a damping time in seconds; pic_share = 0.01 at a step dt is "
+                                                "about dt / 0.01");
+        }
     }
 
     void readMaterials(const Section& root) {

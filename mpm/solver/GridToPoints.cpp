@@ -22,7 +22,7 @@ namespace qs {
 template <int D>
 void DoublePointSolver<D>::gridToPoints() {
     const Real dt = dt_;
-    const Real picShare = config_.liquid.picShare;
+    const Real picShare = config_.liquid.picShareFor(dt);
     Real lowest[D] = {}, extent[D];  // points stay inside the grid, axis by axis
     for (int d = 0; d < D; ++d) extent[d] = grid_.cells(d) * grid_.h();
     const bool axisymmetric = grid_.axisymmetric();

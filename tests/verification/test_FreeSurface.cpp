@@ -162,12 +162,16 @@ struct SeededFreeWater {
 };
 
 SeededFreeWater freeWaterAfter(double picShare, double noise, double swirl, int steps, int across = 2,
-                               double cells = 3.0) {
+                               double cells = 3.0, double dampingTime = 0.0, double courant = 0.0,
+                               double* stepSize = nullptr) {
     CaseConfig c = freeWaterColumn(cells);
     inGeometry(c, Geometry::Plane2D, across);
     c.liquid.picShare = picShare;
+    c.liquid.picDampingTime = dampingTime;
+    if (courant > 0) c.time.courant = courant;
     auto reservoir = makeReservoirModel(c);
     DoublePointSolver<2> solver(c, *reservoir);
+    if (stepSize) *stepSize = solver.dt();
     const double z0 = c.sandTop() + c.grid.cellSize;  // a cell clear of the sand's nodes
     const double z1 = c.column.waterLevel, width = c.grid.width, pi = std::acos(-1.0);
     const auto& l = solver.liquid();
@@ -227,6 +231,31 @@ TEST(FreeSurface2D, PicShareDampsThePointVelocitiesTheGridCannotSee) {
     EXPECT_LT(std::abs(blended / closed - 1), 0.05);  // guard
     std::printf("free water's random point velocities after 300 steps: FLIP %.3f of the seed, pic_share 0.01 %.3f "
                 "((0.99)^300 = %.3f)\n", flip, blended, closed);
+}
+
+// liquid.pic_damping_time: the same blend given as a time T, alpha = 1 - exp(-dt / T) each step,
+// so that it damps as much per second whatever the step: a semi-implicit step 6.5 times the
+// explicit one took pic_share = 0.01 as a damping time of 13 ms instead of 2 ms. Two runs of
+// the same simulated time, one at half the step (courant 0.2 against 0.4) and twice the steps,
+// both towards exp(-t / T).
+TEST(FreeSurface2D, PicDampingTimeDampsAsMuchPerSecondWhateverTheStep) {
+    const double seed = 1e-6;  // m/s
+    double dt = 0, dtHalf = 0;
+    freeWaterAfter(0.0, seed, 0.0, 0, 2, 3.0, 0.0, 0.4, &dt);
+    const double T = 100 * dt;  // pic_share 0.01 at the coarser step
+    const double coarse = freeWaterAfter(0.0, seed, 0.0, 300, 2, 3.0, T, 0.4, &dt).noise;
+    const double fine = freeWaterAfter(0.0, seed, 0.0, 600, 2, 3.0, T, 0.2, &dtHalf).noise;
+    const double closed = std::exp(-300 * dt / T);
+    ASSERT_NEAR(dtHalf / dt, 0.5, 1e-12);
+    std::printf("pic_damping_time %.3g s: noise left after %.3g s at dt %.3g s %.4f, at dt / 2 %.4f "
+                "(exp(-t / T) = %.4f)\n", T, 300 * dt, dt, coarse, fine, closed);
+    EXPECT_LT(std::abs(coarse / closed - 1), 0.10);
+    EXPECT_LT(std::abs(fine / closed - 1), 0.10);
+    // per step, pic_share = 0.01 at both steps would leave 0.049 and 0.0024: here the two agree
+    EXPECT_LT(std::abs(fine / coarse - 1), 0.05);
+    // guards near what is achieved (0.0500 and 0.0499 against 0.0498)
+    EXPECT_LT(std::abs(coarse / closed - 1), 0.02);
+    EXPECT_LT(std::abs(fine / coarse - 1), 0.01);
 }
 
 // The blend must take the grid's velocity, not zero: at rest the two are the same, so here the
