@@ -50,27 +50,11 @@ void PressureSystem::build(const Grid<D>& grid, PressureSolver solver) {
 
 bool PressureSystem::factorize() {
     if (direct_) {
-        if (!analysed_) {
-            ldlt_.analyzePattern(A_);
-            lagged_.setTolerance(kLaggedTolerance);
-            lagged_.setMaxIterations(kLaggedIterations);
-            analysed_ = true;
-        }
-        if (!restored_.empty()) {
-            // the checkpoint's kept factorisation: the matrix it was made of, factorised again
-            Matrix earlier = A_;
-            std::copy(restored_.begin(), restored_.end(), earlier.valuePtr());
-            ldlt_.factorize(earlier);
-            factored_.swap(restored_);
-            restored_.clear();
-            refactor_ = false;
-            lagged_.preconditioner().use(&ldlt_);
-            if (ldlt_.info() != Eigen::Success || !(ldlt_.vectorD().minCoeff() > 0)) return factorizeNow();
-        }
-        if (refactor_) return factorizeNow();
-        fresh_ = false;
-        lagged_.compute(A_);  // keeps a reference to A_, whose arrays stay: nothing is copied
-        return true;
+        if (!analysed_) { ldlt_.analyzePattern(A_); analysed_ = true; }
+        ldlt_.factorize(A_);
+        // LDL^T takes indefinite matrices too: a pivot at or below zero means the system is not
+        // the positive definite one the step assembles
+        return ldlt_.info() == Eigen::Success && ldlt_.vectorD().minCoeff() > 0;
     }
     // the preconditioner's ordering once, its incomplete factorisation each step
     cg_.setTolerance(kTolerance);
@@ -79,37 +63,8 @@ bool PressureSystem::factorize() {
     return cg_.info() == Eigen::Success;
 }
 
-bool PressureSystem::restoreFactorisation(const std::vector<double>& values) {
-    if (!direct_ || values.empty()) return values.empty();
-    if (static_cast<Index>(values.size()) != nonZeros()) return false;
-    restored_ = values;
-    return true;
-}
-
-bool PressureSystem::factorizeNow() {
-    ldlt_.factorize(A_);
-    factored_.assign(A_.valuePtr(), A_.valuePtr() + A_.nonZeros());
-    ++factorisations_;
-    fresh_ = true;
-    refactor_ = false;
-    lagged_.preconditioner().use(&ldlt_);
-    // LDL^T takes indefinite matrices too: a pivot at or below zero means the system is not
-    // the positive definite one the step assembles
-    return ldlt_.info() == Eigen::Success && ldlt_.vectorD().minCoeff() > 0;
-}
-
 bool PressureSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     if (direct_) {
-        if (!fresh_) {
-            x = lagged_.solveWithGuess(b, x);
-            iterations_ = static_cast<int>(lagged_.iterations());
-            error_ = lagged_.error();
-            const bool converged = lagged_.info() == Eigen::Success && x.allFinite();
-            if (!converged || iterations_ > kRefactorAbove) refactor_ = true;
-            if (converged) return true;
-            // the earlier factorisation no longer serves this matrix: its own, for this solve
-            if (!factorizeNow()) return false;
-        }
         x = ldlt_.solve(b);
         iterations_ = 0;
         return ldlt_.info() == Eigen::Success && x.allFinite();

@@ -406,12 +406,10 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
         const IntegratorStats& i = r.integrator;
         if (i.steps > 0) {
             std::printf("quicksand: semi-implicit step, dt = %.3g s: the pressure solve took %.1f %% of the wall time, "
-                        "%.3f solves per step (%s",
+                        "%.3f solves per step (%s%s",
                         r.dt, r.wallSeconds > 0 ? 100 * i.seconds / r.wallSeconds : 0.0,
-                        double(i.solves) / double(i.steps), i.solver);
-            if (i.factorisations > 0)
-                std::printf(", factorised for %.1f %% of the solves", 100.0 * double(i.factorisations) / double(i.solves));
-            if (i.iterations > 0) std::printf(", %.2f CG iterations per solve", double(i.iterations) / double(i.solves));
+                        double(i.solves) / double(i.steps), i.solver, i.iterations > 0 ? ", " : "");
+            if (i.iterations > 0) std::printf("%.1f iterations per solve", double(i.iterations) / double(i.solves));
             std::printf(")\n");
             if (i.cappedSteps > 0)
                 std::printf("quicksand: %ld steps ended their active set (the water's bound) unsettled\n", i.cappedSteps);

@@ -5,7 +5,6 @@
 #include <chrono>
 #include <cmath>
 #include <sstream>
-#include <string>
 
 #include "core/Error.hpp"
 #include "core/ForAll.hpp"
@@ -34,28 +33,20 @@ SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context)
                                      : "conjugate gradients, incomplete Cholesky (Eigen)";
 }
 
-// CG's starting guesses, dp and y, one after the other, then (the direct solver) the values of
-// the matrix its kept factorisation was made of (PressureSystem::factoredValues)
+// CG's starting guesses, dp and y, one after the other
 template <int D>
 std::vector<double> SemiImplicitIntegrator<D>::saveState() const {
     std::vector<double> state(dp_.data(), dp_.data() + dp_.size());
     state.insert(state.end(), gateY_.data(), gateY_.data() + gateY_.size());
-    const std::vector<double>& factored = system_.factoredValues();
-    state.insert(state.end(), factored.begin(), factored.end());
     return state;
 }
 
 template <int D>
 void SemiImplicitIntegrator<D>::restoreState(const std::vector<double>& state) {
     const Index nc = ctx_.grid.numCells();
-    const Index size = static_cast<Index>(state.size()), kept = 2 * nc + system_.nonZeros();
-    // without the kept factorisation's matrix (a checkpoint of a CG run, or of one written before
-    // 2026-12-06), the first step factorises its own
-    QS_CHECK(size == 2 * nc || (system_.direct() && size == kept),
+    QS_CHECK(static_cast<Index>(state.size()) == 2 * nc,
              "entry 'integrator' holds " << state.size() << " values, the semi-implicit step's state on this grid "
-                                         << 2 * nc << (system_.direct() ? " or " + std::to_string(kept) : std::string())
-                                         << ": a checkpoint of another case or grid");
-    if (size == kept) system_.restoreFactorisation(std::vector<double>(state.begin() + 2 * nc, state.end()));
+                                         << 2 * nc << ": a checkpoint of another case or grid");
     dp_ = Eigen::Map<const Eigen::VectorXd>(state.data(), nc);
     gateY_ = Eigen::Map<const Eigen::VectorXd>(state.data() + nc, nc);
 }
@@ -96,7 +87,6 @@ Real SemiImplicitIntegrator<D>::solveVelocities(const StepInputs& in, Real time)
     }
     stats_.steps += 1;
     stats_.solves += solves_;
-    stats_.factorisations = system_.factorisations();
     // At the cap the set still moved: one more pass solved with it, so that no cell pulls its
     // neighbours with a suction its water cannot carry; a release it missed is a compression,
     // which updatePressure presses into the water

@@ -62,8 +62,7 @@ struct IntegratorStats {
     long steps = 0;
     long solves = 0;          ///< linear solves (active-set passes), over all steps
     long cappedSteps = 0;     ///< steps whose active set had not settled after the last pass
-    long iterations = 0;      ///< CG iterations over all solves
-    long factorisations = 0;  ///< the direct solver's, over the run (it keeps one over steps)
+    long iterations = 0;      ///< CG iterations over all solves (0 with the direct solver)
     double seconds = 0;       ///< s of wall time in the response, assembly, solve and correction
     const char* solver = "";  ///< the linear solver, for the summary
 };
