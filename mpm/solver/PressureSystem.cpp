@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/ForAll.hpp"
+
 namespace qs {
 
 template <int D>
@@ -32,6 +34,17 @@ void PressureSystem::build(const Grid<D>& grid, PressureSolver solver) {
     A_.setFromTriplets(entries.begin(), entries.end());
     A_.makeCompressed();
     analysed_ = false;
+    if (direct_) {
+        // the slabs across the longest axis (a column's height)
+        int axis = 0;
+        for (int d = 1; d < D; ++d)
+            if (grid.cells(d) >= grid.cells(axis)) axis = d;
+        std::vector<int> layer(nc);
+        for (Index c = 0; c < nc; ++c) layer[c] = static_cast<int>(grid.cellCoords(c)[axis]);
+        const bool split = D == 2 && nc >= kMinParallelItems;
+        ldlt_.analyse(A_, layer, static_cast<int>(grid.cells(axis)), split ? kSlabs : 1);
+        analysed_ = true;
+    }
     // the neighbours' places, in the order the triplets above came: within a column Eigen sorts
     // the rows, which is the order of the offsets' codes (axis 0 fastest in both)
     stencil_ = D == 1 ? 3 : D == 2 ? 9 : 27;
@@ -49,13 +62,7 @@ void PressureSystem::build(const Grid<D>& grid, PressureSolver solver) {
 }
 
 bool PressureSystem::factorize() {
-    if (direct_) {
-        if (!analysed_) { ldlt_.analyzePattern(A_); analysed_ = true; }
-        ldlt_.factorize(A_);
-        // LDL^T takes indefinite matrices too: a pivot at or below zero means the system is not
-        // the positive definite one the step assembles
-        return ldlt_.info() == Eigen::Success && ldlt_.vectorD().minCoeff() > 0;
-    }
+    if (direct_) return ldlt_.factorize(A_);  // false if a pivot is at or below zero
     // the preconditioner's ordering once, its incomplete factorisation each step
     cg_.setTolerance(kTolerance);
     if (!analysed_) { cg_.analyzePattern(A_); analysed_ = true; }
@@ -65,9 +72,9 @@ bool PressureSystem::factorize() {
 
 bool PressureSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     if (direct_) {
-        x = ldlt_.solve(b);
+        ldlt_.solve(b, x);
         iterations_ = 0;
-        return ldlt_.info() == Eigen::Success && x.allFinite();
+        return x.allFinite();
     }
     x = cg_.solveWithGuess(b, x);
     iterations_ = static_cast<int>(cg_.iterations());

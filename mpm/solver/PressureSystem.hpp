@@ -7,8 +7,9 @@
 // identity, so the symbolic work (the ordering, the fill of the factor) is done once, and each step
 // writes values into the same arrays and factorises anew.
 //
-// The solvers are Eigen's (no hand-written linear algebra):
-//   - Direct: SimplicialLDLT, a sparse Cholesky factorisation with an AMD ordering;
+// The solvers are Eigen's:
+//   - Direct: SimplicialLDLT, a sparse Cholesky factorisation with an AMD ordering; in 2D from
+//     kMinParallelItems cells split into kSlabs slabs, factorised side by side (SlabCholesky.hpp);
 //   - ConjugateGradient: CG with an incomplete-Cholesky preconditioner (IncompleteCholesky),
 //     started from the caller's guess (the semi-implicit step passes its last solution).
 // docs/performance.md, "The pressure solve alone", measures both; PressureSolver::Automatic
@@ -21,6 +22,7 @@
 #include "core/Types.hpp"
 #include "grid/Grid.hpp"
 #include "io/CaseConfig.hpp"
+#include "solver/SlabCholesky.hpp"
 
 namespace qs {
 
@@ -28,6 +30,10 @@ class PressureSystem {
 public:
     /// 3D cells up to which Automatic takes the direct solver (the two are even at 1e3 cells).
     static constexpr Index kDirectCellLimit3D = 2000;
+    /// Slabs of the 2D direct solve: the project's machine's two cores. A fixed number, not the
+    /// threads', so that one thread and two give the same results; more slabs add separators
+    /// and fill (docs/performance.md, "The direct solve in slabs").
+    static constexpr int kSlabs = 2;
     /// CG's tolerance on |b - A x| / |b|.
     static constexpr Real kTolerance = 1e-10;
 
@@ -59,11 +65,12 @@ public:
     int iterations() const { return iterations_; }   ///< CG's last, 0 for Direct
     Real error() const { return error_; }            ///< CG's last relative residual
     Index cells() const { return static_cast<Index>(A_.rows()); }
+    int slabs() const { return direct_ ? ldlt_.slabs() : 1; }
 
 private:
     using Matrix = Eigen::SparseMatrix<double>;  // column-major: Eigen's sparse solvers' own layout
     Matrix A_;
-    Eigen::SimplicialLDLT<Matrix> ldlt_;
+    SlabCholesky ldlt_;
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg_;
     std::vector<signed char> slots_;  ///< [cell][3^D] place of each neighbour in the cell's column, -1 outside
     int stencil_ = 0;
