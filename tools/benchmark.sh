@@ -21,7 +21,8 @@
 #                                      Then BM_Pressure2D/3D: the solve alone, 1e3 to 1e5 cells,
 #                                      Eigen's sparse Cholesky against CG with incomplete Cholesky,
 #                                      and BM_PressureAMG2D/3D: CG with hypre's BoomerAMG, 1e3 to
-#                                      1e6 cells (where hypre is installed).
+#                                      1e6 cells (where hypre is installed), and BM_SlabCholesky:
+#                                      the 2D direct solve in one slab or two, on 1 and 2 threads.
 #                                      About 45 minutes (SCHEMES_END=10 for 10 s runs, SCHEMES_END_2D
 #                                      for the 2D rows alone)
 # Speed is measured here, never by timed tests.
@@ -94,6 +95,12 @@ PY
     echo "   BM_PressureAMG2D/3D: cells per axis / 1 AMG set up each solve, 0 set up once; real water)"
     OMP_NUM_THREADS=1 "$build_dir/tools/benchmarks/quicksand_benchmarks" --benchmark_filter='BM_Pressure' \
         2>&1 | grep -E '^(BM_|---|Benchmark)' || true
+    for threads in 1 2; do
+        echo "== the 2D direct solve in one slab or two side by side (BM_SlabCholesky: cells across /"
+        echo "   cells high / slabs; 26 x 98 is piping2D on 3.1 mm), OMP_NUM_THREADS=$threads"
+        OMP_NUM_THREADS=$threads "$build_dir/tools/benchmarks/quicksand_benchmarks" \
+            --benchmark_filter='BM_SlabCholesky' 2>&1 | grep -E '^(BM_|---|Benchmark)' || true
+    done
     exit 0
 fi
 

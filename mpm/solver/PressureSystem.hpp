@@ -66,6 +66,8 @@ public:
     Real error() const { return error_; }            ///< CG's last relative residual
     Index cells() const { return static_cast<Index>(A_.rows()); }
     int slabs() const { return direct_ ? ldlt_.slabs() : 1; }
+    /// The matrix as assembled (cell order, both triangles): for the benchmarks and tests.
+    const Eigen::SparseMatrix<double>& matrix() const { return A_; }
 
 private:
     using Matrix = Eigen::SparseMatrix<double>;  // column-major: Eigen's sparse solvers' own layout

@@ -29,8 +29,9 @@ SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context)
     gateWeight_.assign(ctx_.masks.gateNodes.size(), 0.0);
     for (auto* v : {&rhs_, &dp_, &gateY_, &heldValue_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
     system_.build(ctx_.grid, ctx_.config.time.pressureSolver);
-    stats_.solver = system_.direct() ? "sparse Cholesky (Eigen SimplicialLDLT)"
-                                     : "conjugate gradients, incomplete Cholesky (Eigen)";
+    stats_.solver = !system_.direct()         ? "conjugate gradients, incomplete Cholesky (Eigen)"
+                    : system_.slabs() == 1 ? "sparse Cholesky (Eigen SimplicialLDLT)"
+                                           : "sparse Cholesky (Eigen SimplicialLDLT), slabs side by side";
 }
 
 // CG's starting guesses, dp and y, one after the other

@@ -7,7 +7,13 @@
 // phases: beta = 1 / M, M the node's mixture mass), at the semi-implicit step of the Deltares
 // sand (dt = 0.4 h / 28.6 m/s). The matrix is assembled with the solver's own divergence weights
 // (Grid::divergenceWeight), so its stencil and conditioning are the step's. solver 1: Eigen's
-// SimplicialLDLT; 2: conjugate gradients with IncompleteCholesky. Counters: cells, iterations.
+// SimplicialLDLT (in 2D from 1 024 cells in two slabs side by side, solver/SlabCholesky.hpp);
+// 2: conjugate gradients with IncompleteCholesky. Counters: cells, iterations.
+//
+// BM_SlabCholesky/<cells across>/<cells high>/<slabs>: the direct solve alone on the same sand
+// in a column of cells (26 x 98: piping2D on 3.1 mm cells), in one slab or split into two
+// factorised side by side, with OpenMP's threads as set (OMP_NUM_THREADS=1 or 2). Counter:
+// operations, the larger slab's sum of squared column counts of its factor.
 #include <benchmark/benchmark.h>
 
 #include "SandSystem.hpp"
@@ -33,7 +39,29 @@ void BM_Pressure(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * grid.numCells());
 }
 
+void BM_SlabCholesky(benchmark::State& state) {
+    const qs::Grid<2> grid(qs::IVec<2>{state.range(0), state.range(1)}, 0.0031, 0.005);
+    qs::PressureSystem system;
+    system.build(grid, qs::PressureSolver::Direct);
+    Eigen::VectorXd b(grid.numCells()), x(grid.numCells());
+    qs::bench::fillSandSystem(grid, system, b);
+    std::vector<int> layer(grid.numCells());
+    for (qs::Index c = 0; c < grid.numCells(); ++c) layer[c] = static_cast<int>(grid.cellCoords(c)[1]);
+    qs::SlabCholesky cholesky;
+    cholesky.analyse(system.matrix(), layer, static_cast<int>(grid.cells(1)), static_cast<int>(state.range(2)));
+    for (auto _ : state) {
+        if (!cholesky.factorize(system.matrix())) state.SkipWithError("the factorisation failed");
+        cholesky.solve(b, x);
+    }
+    state.counters["slabs"] = cholesky.slabs();
+    state.counters["operations"] = cholesky.largestSlabOperations();
+    state.SetItemsProcessed(state.iterations() * grid.numCells());
+}
+
 }  // namespace
+
+BENCHMARK(BM_SlabCholesky)->ArgsProduct({{26}, {98}, {1, 2}})->Args({100, 100, 1})->Args({100, 100, 2})
+    ->Unit(benchmark::kMillisecond);
 
 // 1e3 to 1e5 cells; the 3D direct solver only to 1e4 (its fill makes 1e5 minutes a solve)
 BENCHMARK_TEMPLATE(BM_Pressure, 2)->Name("BM_Pressure2D")

@@ -107,5 +107,19 @@ TEST(PressureSystem, AFailedFactorisationOrANonFiniteSolutionIsReported) {
     EXPECT_FALSE(system.solve(b, x));
 }
 
+// The direct solve is split in slabs in 2D from kMinParallelItems cells, not in 1D, 3D or CG
+TEST(PressureSystem, TheDirectSolveIsSplitInSlabsIn2DFromAThousandCells) {
+    auto slabsOf = [](const auto& grid, PressureSolver solver) {
+        PressureSystem system;
+        system.build(grid, solver);
+        return system.slabs();
+    };
+    EXPECT_EQ(slabsOf(Grid<2>(IVec<2>{26, 98}, 0.0031, 1.0), PressureSolver::Direct), PressureSystem::kSlabs);
+    EXPECT_EQ(slabsOf(Grid<2>(IVec<2>{26, 39}, 0.0031, 1.0), PressureSolver::Direct), 1);  // 1 014 cells
+    EXPECT_EQ(slabsOf(Grid<2>(IVec<2>{26, 98}, 0.0031, 1.0), PressureSolver::ConjugateGradient), 1);
+    EXPECT_EQ(slabsOf(Grid<1>(IVec<1>{2000}, 0.0031, 1.0), PressureSolver::Direct), 1);
+    EXPECT_EQ(slabsOf(Grid<3>(IVec<3>{10, 10, 19}, 0.0062, 1.0), PressureSolver::Direct), 1);
+}
+
 }  // namespace
 }  // namespace qs
