@@ -5,6 +5,8 @@
 #include <limits>
 #include <numeric>
 
+#include "core/Error.hpp"
+
 namespace qs {
 
 namespace {
@@ -72,12 +74,14 @@ double SlabCholesky::buildPattern(Slab& slab, const Matrix& A) {
         slab.source[p] = sourceOfEntry[static_cast<std::size_t>(slab.M.valuePtr()[p])];
     // the symbolic factorisation, and a factorisation of the identity on that pattern so that the
     // factor's column counts can be read
-    slab.factor = std::make_unique<Eigen::SimplicialLDLT<Matrix, Eigen::Upper, Eigen::NaturalOrdering<int>>>();
+    slab.factor = std::make_unique<InPlaceLDLT>();
     slab.factor->analyzePattern(slab.M);
+    // the factor's column counts are set by the analysis; a factorisation of the identity on that
+    // pattern makes Eigen's matrixL() readable
     Matrix identity = slab.M;
     for (Index j = 0; j < m; ++j)
         for (Matrix::InnerIterator it(identity, j); it; ++it) it.valueRef() = it.row() == j ? 1.0 : 0.0;
-    slab.factor->factorize(identity);
+    slab.factor->factorizeInPlace(identity);
     const int* Lp = slab.factor->matrixL().nestedExpression().outerIndexPtr();
     double operations = 0;
     for (Index j = 0; j < m; ++j) operations += static_cast<double>(Lp[j + 1] - Lp[j]) * (Lp[j + 1] - Lp[j]);
@@ -128,6 +132,8 @@ SlabCholesky::Slab SlabCholesky::makeSlab(const Matrix& A, const std::vector<Ind
 
 void SlabCholesky::analyse(const Matrix& A, const std::vector<int>& layer, int layers, int slabs) {
     const Index n = A.rows();
+    rows_ = n;
+    nonZeros_ = A.nonZeros();
     int count = std::max(1, std::min(slabs, (layers + 1) / (kMinLayers + 1)));
     std::vector<Index> all(n), globalRank(n);
     std::iota(all.begin(), all.end(), Index{0});
@@ -216,10 +222,10 @@ double SlabCholesky::largestSlabOperations() const {
 void SlabCholesky::factorizeSlab(Slab& slab, const Matrix& A) {
     double* value = slab.M.valuePtr();
     for (std::size_t p = 0; p < slab.source.size(); ++p) value[p] = A.valuePtr()[slab.source[p]];
-    slab.factor->factorize(slab.M);
-    // LDL^T takes indefinite matrices too: a pivot at or below zero means M_k, and so A, is not
-    // positive definite
-    slab.ok = slab.factor->info() == Eigen::Success && (slab.M.rows() == 0 || slab.factor->vectorD().minCoeff() > 0);
+    slab.factor->factorizeInPlace(slab.M);
+    // LDL^T takes indefinite matrices too: a pivot at or below zero (or NaN) means M_k, and so A,
+    // is not positive definite
+    slab.ok = slab.factor->info() == Eigen::Success && (slab.factor->vectorD().array() > 0).all();
     const Index own = slab.own, m = static_cast<Index>(slab.cells.size());
     if (!slab.ok || own == m) return;
     const Matrix& L = slab.factor->matrixL().nestedExpression();
@@ -231,6 +237,9 @@ void SlabCholesky::factorizeSlab(Slab& slab, const Matrix& A) {
 }
 
 bool SlabCholesky::factorize(const Matrix& A) {
+    QS_CHECK(A.rows() == rows_ && A.nonZeros() == nonZeros_,
+             "SlabCholesky::factorize: a matrix of " << A.rows() << " rows and " << A.nonZeros()
+                                                     << " entries, analysed with " << rows_ << " and " << nonZeros_);
     const int count = slabs();
     if (count == 1) {
         factorizeSlab(slabs_.front(), A);
@@ -246,11 +255,13 @@ bool SlabCholesky::factorize(const Matrix& A) {
         const Index ms = slab.T.rows();
         S_.block(slab.firstSeparator, slab.firstSeparator, ms, ms) += slab.T;
     }
+    if (!S_.allFinite()) return false;  // LLT's pivot test, d <= 0, lets a NaN through
     schur_.compute(S_);
     return schur_.info() == Eigen::Success;
 }
 
 void SlabCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    x.resize(b.size());  // no allocation when it has the size already
     const int count = slabs();
     auto forward = [&](Slab& slab) {
         slab.y.setZero();

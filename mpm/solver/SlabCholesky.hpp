@@ -26,7 +26,10 @@
 // The number of slabs is the caller's and does not depend on the threads: one thread or two, the
 // arithmetic is the same and so are the results, to the bit. One slab is the plain factorisation
 // with Eigen's AMD ordering. The orderings and the separators' places are chosen once (analyse),
-// each factorisation writes the same arrays: nothing is allocated in the time loop.
+// each factorisation writes the same arrays. Nothing is allocated in the time loop up to Eigen's
+// stack limits: a slab of up to 16 384 cells (Eigen's factorisation keeps three work arrays of
+// its size on the stack below 128 kB) and a separator of up to about 128 cells (the dense
+// products' and LLT's blocks); beyond, Eigen takes those from the heap.
 #include <Eigen/Cholesky>
 #include <Eigen/Core>
 #include <Eigen/SparseCholesky>
@@ -48,18 +51,27 @@ public:
     void analyse(const Matrix& A, const std::vector<int>& layer, int layers, int slabs);
     /// Factorises A's current values; false if A is not positive definite.
     bool factorize(const Matrix& A);
-    /// x = A^-1 b with the last factorisation (x and b may not alias).
+    /// x = A^-1 b with the last factorisation (x is sized as b; b may be x).
     void solve(const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
     int slabs() const { return static_cast<int>(slabs_.size()); }
-    /// Operations of the factorisation, sum over the factors' columns of their count squared:
-    /// the slabs' (the largest decides the parallel time) and the separators' dense part.
+    /// The separators' cells, separator by separator (none for one slab).
+    const std::vector<Index>& separatorCells() const { return separatorCells_; }
+    /// Operations of the largest slab's factorisation (which decides the parallel time): the sum
+    /// over its factor's columns of their count squared.
     double largestSlabOperations() const;
 
     /// Layers a slab keeps of its own at least.
     static constexpr int kMinLayers = 4;
 
 private:
+    /// Eigen's SimplicialLDLT factorising a matrix that is already in its order and upper
+    /// triangle where it is: its factorize() would allocate an empty copy's index array each call.
+    class InPlaceLDLT : public Eigen::SimplicialLDLT<Matrix, Eigen::Upper, Eigen::NaturalOrdering<int>> {
+    public:
+        void factorizeInPlace(const Matrix& M) { this->template factorize_preordered<true>(M); }
+    };
+
     struct Slab {
         std::vector<Index> cells;   ///< the rows of M: its own cells (ordered), then its separators'
         Index own = 0;              ///< how many of cells are its own
@@ -67,11 +79,11 @@ private:
         Matrix M;                   ///< M's upper triangle, in that order
         std::vector<Index> source;  ///< for each of M's stored values, its place in A's values
         /// M = L D L^T; held by pointer because Eigen's factorisations cannot be moved
-        std::unique_ptr<Eigen::SimplicialLDLT<Matrix, Eigen::Upper, Eigen::NaturalOrdering<int>>> factor;
+        std::unique_ptr<InPlaceLDLT> factor;
         Eigen::MatrixXd Lss, LD;    ///< the factor's separator block (unit lower) and Lss D_ss
         Eigen::MatrixXd T;          ///< Lss D_ss Lss^T = T_k
         Eigen::VectorXd y;          ///< the slab's forward and back substitutions
-        Eigen::VectorXd c;          ///< its part of sum_k A_sk A_kk^-1 b_k, -Lss y_s
+        Eigen::VectorXd c;          ///< Lss y_s = -A_sk A_kk^-1 b_k, its part of the separators' right-hand side
         bool ok = false;
     };
 
@@ -91,6 +103,7 @@ private:
     Eigen::MatrixXd S_;
     Eigen::LLT<Eigen::MatrixXd> schur_;
     Eigen::VectorXd r_;
+    Index rows_ = 0, nonZeros_ = 0;  ///< A's as analysed: factorize checks that it is given the same
 };
 
 }  // namespace qs

@@ -7,6 +7,8 @@
 #include <cmath>
 #include <random>
 
+#include <Eigen/LU>
+
 #include "solver/PressureSystem.hpp"
 
 namespace qs {
@@ -44,21 +46,10 @@ void fillStepMatrix(const Grid<D>& grid, PressureSystem& system, double storage,
     }
 }
 
-// The pattern and values of the system as an Eigen matrix, the cells' layers along the last axis
-template <int D>
-SlabCholesky::Matrix matrixOf(const Grid<D>& grid, PressureSystem& system) {
-    std::vector<Eigen::Triplet<double>> entries;
-    for (Index c = 0; c < grid.numCells(); ++c)
-        for (Index k = 0; k < system.size(c); ++k) entries.emplace_back(system.rows(c)[k], static_cast<int>(c), system.values(c)[k]);
-    SlabCholesky::Matrix A(grid.numCells(), grid.numCells());
-    A.setFromTriplets(entries.begin(), entries.end());
-    A.makeCompressed();
-    return A;
-}
-
 /// How much larger the slabs' residual may be than Eigen's (achieved: 0.96 to 1.27)
 constexpr double kResidualRatio = 2;
 
+/// Each cell's layer along the last axis
 template <int D>
 std::vector<int> layersOf(const Grid<D>& grid) {
     std::vector<int> layer(grid.numCells());
@@ -77,14 +68,22 @@ double errorAgainstEigen(const Grid<D>& grid, double storage, int slabs, int exp
     if (heldEvery > 0)
         for (Index c = 0; c < grid.numCells(); c += heldEvery) held[c] = 1;
     fillStepMatrix(grid, system, storage, held, 7);
-    const SlabCholesky::Matrix A = matrixOf(grid, system);
+    const SlabCholesky::Matrix A = system.matrix();
     SlabCholesky split;
     split.analyse(A, layersOf(grid), static_cast<int>(grid.cells(D - 1)), slabs);
     EXPECT_EQ(split.slabs(), expectedSlabs);
     Eigen::VectorXd b(grid.numCells()), x(grid.numCells());
     for (Index c = 0; c < grid.numCells(); ++c) b[c] = std::sin(0.37 * c) + 0.5;
-    // twice: the second factorisation writes the same arrays
-    for (int round = 0; round < 2; ++round) EXPECT_TRUE(split.factorize(A));
+    // as the step uses it: another matrix factorised and solved first (the same pattern, other
+    // values), then this one solved twice, the second time for b: nothing of the first
+    // factorisation or solve may remain
+    SlabCholesky::Matrix other = A;
+    for (Index k = 0; k < other.nonZeros(); ++k) other.valuePtr()[k] *= 1 + 0.3 * std::sin(1.7 * k);
+    for (Index c = 0; c < grid.numCells(); ++c) other.coeffRef(c, c) += 10 * std::abs(A.coeff(c, c));
+    EXPECT_TRUE(split.factorize(other));
+    split.solve(Eigen::VectorXd::Constant(grid.numCells(), 3.0), x);
+    EXPECT_TRUE(split.factorize(A));
+    split.solve(Eigen::VectorXd::Constant(grid.numCells(), -2.0), x);
     split.solve(b, x);
     Eigen::SimplicialLDLT<SlabCholesky::Matrix> eigen(A);
     EXPECT_EQ(eigen.info(), Eigen::Success);
@@ -118,7 +117,7 @@ TEST(SlabCholesky, AShortAxisGetsFewerSlabs) {
     }
 }
 
-// A negative pivot in a slab, or a separator whose Schur complement is not positive, is refused
+// A negative pivot in a slab is refused
 TEST(SlabCholesky, AMatrixThatIsNotPositiveDefiniteIsRefused) {
     const Grid<2> grid(IVec<2>{10, 30}, 0.01, 1.0);
     for (int where : {3, 15}) {  // a cell of the first slab; one in the middle, at or next to the separator
@@ -127,13 +126,53 @@ TEST(SlabCholesky, AMatrixThatIsNotPositiveDefiniteIsRefused) {
         system.build(grid, PressureSolver::Direct);
         std::vector<char> held(grid.numCells(), 0);
         fillStepMatrix(grid, system, 1e-3, held, 3);
-        SlabCholesky::Matrix A = matrixOf(grid, system);
+        SlabCholesky::Matrix A = system.matrix();
         A.coeffRef(where * 10 + 4, where * 10 + 4) = -1.0;
         SlabCholesky split;
         split.analyse(A, layersOf(grid), 30, 2);
         ASSERT_EQ(split.slabs(), 2);
         EXPECT_FALSE(split.factorize(A));
     }
+}
+
+// A matrix whose slabs are each positive definite, but whose separator's Schur complement is not:
+// one separator cell's diagonal lowered by delta, between 1 / (S^-1)_jj (where A stops being
+// positive definite) and 1 / (T_k^-1)_jj (where slab k's matrix would), is refused by the dense
+// LLT of S alone
+TEST(SlabCholesky, ASeparatorWhoseSchurComplementIsNotPositiveIsRefused) {
+    const Grid<2> grid(IVec<2>{10, 30}, 0.01, 1.0);
+    PressureSystem system;
+    system.build(grid, PressureSolver::Direct);
+    fillStepMatrix(grid, system, 1e-3, std::vector<char>(grid.numCells(), 0), 5);
+    SlabCholesky::Matrix A = system.matrix();
+    SlabCholesky split;
+    split.analyse(A, layersOf(grid), 30, 2);
+    ASSERT_EQ(split.slabs(), 2);
+    ASSERT_TRUE(split.factorize(A));
+    const Index j = split.separatorCells()[4];
+    const Index separatorLayer = grid.cellCoords(j)[1];
+    // the Schur complement on cell j alone, 1 / (B^-1)_jj, of A over the given cells
+    const Eigen::MatrixXd dense(A);
+    auto pivotOfJ = [&](auto inside) {
+        std::vector<Index> cells;
+        for (Index c = 0; c < grid.numCells(); ++c)
+            if (inside(c)) cells.push_back(c);
+        Eigen::MatrixXd B(cells.size(), cells.size());
+        Index at = -1;
+        for (std::size_t a = 0; a < cells.size(); ++a) {
+            if (cells[a] == j) at = static_cast<Index>(a);
+            for (std::size_t b = 0; b < cells.size(); ++b) B(a, b) = dense(cells[a], cells[b]);
+        }
+        return 1 / B.inverse()(at, at);
+    };
+    const double whole = pivotOfJ([](Index) { return true; });
+    const double below = pivotOfJ([&](Index c) { return grid.cellCoords(c)[1] <= separatorLayer; });
+    const double above = pivotOfJ([&](Index c) { return grid.cellCoords(c)[1] >= separatorLayer; });
+    ASSERT_LT(1.01 * whole, 0.99 * std::min(below, above));  // room between the two bounds
+    const double delta = 0.5 * (whole + std::min(below, above));
+    A.coeffRef(j, j) -= delta;
+    EXPECT_FALSE(Eigen::LLT<Eigen::MatrixXd>(Eigen::MatrixXd(A)).info() == Eigen::Success);  // A indefinite
+    EXPECT_FALSE(split.factorize(A));
 }
 
 }  // namespace
