@@ -43,7 +43,6 @@ void PressureSystem::build(const Grid<D>& grid, PressureSolver solver) {
         for (Index c = 0; c < nc; ++c) layer[c] = static_cast<int>(grid.cellCoords(c)[axis]);
         const bool split = D == 2 && nc >= kMinParallelItems;
         ldlt_.analyse(A_, layer, static_cast<int>(grid.cells(axis)), split ? kSlabs : 1);
-        analysed_ = true;
     }
     // the neighbours' places, in the order the triplets above came: within a column Eigen sorts
     // the rows, which is the order of the offsets' codes (axis 0 fastest in both)

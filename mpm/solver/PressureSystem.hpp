@@ -76,7 +76,7 @@ private:
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg_;
     std::vector<signed char> slots_;  ///< [cell][3^D] place of each neighbour in the cell's column, -1 outside
     int stencil_ = 0;
-    bool direct_ = true, analysed_ = false;
+    bool direct_ = true, analysed_ = false;  ///< analysed_: CG's pattern (the direct one is analysed in build)
     int iterations_ = 0;
     Real error_ = 0;
 };

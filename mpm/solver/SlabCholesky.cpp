@@ -72,8 +72,6 @@ double SlabCholesky::buildPattern(Slab& slab, const Matrix& A) {
     slab.source.resize(slab.M.nonZeros());
     for (Index p = 0; p < slab.M.nonZeros(); ++p)
         slab.source[p] = sourceOfEntry[static_cast<std::size_t>(slab.M.valuePtr()[p])];
-    // the symbolic factorisation, and a factorisation of the identity on that pattern so that the
-    // factor's column counts can be read
     slab.factor = std::make_unique<InPlaceLDLT>();
     slab.factor->analyzePattern(slab.M);
     // the factor's column counts are set by the analysis; a factorisation of the identity on that
@@ -82,9 +80,13 @@ double SlabCholesky::buildPattern(Slab& slab, const Matrix& A) {
     for (Index j = 0; j < m; ++j)
         for (Matrix::InnerIterator it(identity, j); it; ++it) it.valueRef() = it.row() == j ? 1.0 : 0.0;
     slab.factor->factorizeInPlace(identity);
+    return operationsOf(slab);
+}
+
+double SlabCholesky::operationsOf(const Slab& slab) {
     const int* Lp = slab.factor->matrixL().nestedExpression().outerIndexPtr();
     double operations = 0;
-    for (Index j = 0; j < m; ++j) operations += static_cast<double>(Lp[j + 1] - Lp[j]) * (Lp[j + 1] - Lp[j]);
+    for (Index j = 0; j < slab.M.cols(); ++j) operations += static_cast<double>(Lp[j + 1] - Lp[j]) * (Lp[j + 1] - Lp[j]);
     return operations;
 }
 
@@ -210,12 +212,7 @@ void SlabCholesky::analyse(const Matrix& A, const std::vector<int>& layer, int l
 
 double SlabCholesky::largestSlabOperations() const {
     double largest = 0;
-    for (const Slab& slab : slabs_) {
-        const int* Lp = slab.factor->matrixL().nestedExpression().outerIndexPtr();
-        double operations = 0;
-        for (Index j = 0; j < slab.M.cols(); ++j) operations += static_cast<double>(Lp[j + 1] - Lp[j]) * (Lp[j + 1] - Lp[j]);
-        largest = std::max(largest, operations);
-    }
+    for (const Slab& slab : slabs_) largest = std::max(largest, operationsOf(slab));
     return largest;
 }
 

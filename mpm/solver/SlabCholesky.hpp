@@ -92,6 +92,8 @@ private:
                          const std::vector<Index>& globalRank);
     /// M's pattern for the slab's cells as ordered; returns the operations of its factorisation.
     static double buildPattern(Slab& slab, const Matrix& A);
+    /// The sum over the slab's factor's columns of their count squared.
+    static double operationsOf(const Slab& slab);
     static void factorizeSlab(Slab& slab, const Matrix& A);
 
     std::vector<Slab> slabs_;
