@@ -207,7 +207,9 @@ void SlabCholesky::analyse(const Matrix& A, const std::vector<int>& layer, int l
     }
     S_.setZero(ns, ns);
     r_.setZero(ns);
-    schur_ = Eigen::LLT<Eigen::MatrixXd>(ns);
+    // Sized by factorising the identity, not by LLT(ns): that constructor leaves LLT's info
+    // unset, and assigning the object reads it (UBSan: invalid enum load).
+    schur_.compute(Eigen::MatrixXd::Identity(ns, ns));
 }
 
 double SlabCholesky::largestSlabOperations() const {
