@@ -18,7 +18,7 @@ set -euo pipefail
 
 usage() { sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
-packages=(cmake g++ make pkg-config libeigen3-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev
+packages=(cmake g++ make pkg-config libeigen3-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev liblapack-dev
           libgtest-dev libgmock-dev libbenchmark-dev libhypre-dev
           python3-matplotlib python3-numpy python3-h5py)
 with_openfoam=false

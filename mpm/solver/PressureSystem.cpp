@@ -34,7 +34,10 @@ void PressureSystem::build(const Grid<D>& grid, PressureSolver solver) {
     A_.setFromTriplets(entries.begin(), entries.end());
     A_.makeCompressed();
     analysed_ = false;
-    if (direct_) {
+    tridiagonal_ = direct_ && D == 1;
+    if (tridiagonal_) {
+        tridiagonalLdlt_.analyse(A_);
+    } else if (direct_) {
         // the slabs across the longest axis (a column's height)
         int axis = 0;
         for (int d = 1; d < D; ++d)
@@ -61,7 +64,8 @@ void PressureSystem::build(const Grid<D>& grid, PressureSolver solver) {
 }
 
 bool PressureSystem::factorize() {
-    if (direct_) return ldlt_.factorize(A_);  // false if a pivot is at or below zero
+    if (tridiagonal_) return tridiagonalLdlt_.factorize(A_);  // false if a pivot is at or below zero
+    if (direct_) return ldlt_.factorize(A_);
     // the preconditioner's ordering once, its incomplete factorisation each step
     cg_.setTolerance(kTolerance);
     if (!analysed_) { cg_.analyzePattern(A_); analysed_ = true; }
@@ -71,7 +75,8 @@ bool PressureSystem::factorize() {
 
 bool PressureSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     if (direct_) {
-        ldlt_.solve(b, x);
+        if (tridiagonal_) tridiagonalLdlt_.solve(b, x);
+        else ldlt_.solve(b, x);
         iterations_ = 0;
         return x.allFinite();
     }
@@ -79,6 +84,13 @@ bool PressureSystem::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
     iterations_ = static_cast<int>(cg_.iterations());
     error_ = cg_.error();
     return cg_.info() == Eigen::Success && x.allFinite();
+}
+
+const char* PressureSystem::solverName() const {
+    if (tridiagonal_) return "tridiagonal Cholesky (LAPACK dpttrf)";
+    if (!direct_) return "conjugate gradients, incomplete Cholesky (Eigen)";
+    return slabs() == 1 ? "sparse Cholesky (Eigen SimplicialLDLT)"
+                        : "sparse Cholesky (Eigen SimplicialLDLT), slabs side by side";
 }
 
 template void PressureSystem::build<1>(const Grid<1>&, PressureSolver);

@@ -7,10 +7,11 @@
 // identity, so the symbolic work (the ordering, the fill of the factor) is done once, and each step
 // writes values into the same arrays and factorises anew.
 //
-// The solvers are Eigen's:
-//   - Direct: SimplicialLDLT, a sparse Cholesky factorisation with an AMD ordering; in 2D from
+// The solvers:
+//   - Direct: in 1D the tridiagonal L D L^T of LAPACK (TridiagonalCholesky.hpp); in 2D and 3D
+//     Eigen's SimplicialLDLT, a sparse Cholesky factorisation with an AMD ordering, in 2D from
 //     kMinParallelItems cells split into kSlabs slabs, factorised side by side (SlabCholesky.hpp);
-//   - ConjugateGradient: CG with an incomplete-Cholesky preconditioner (IncompleteCholesky),
+//   - ConjugateGradient: Eigen's CG with an incomplete-Cholesky preconditioner (IncompleteCholesky),
 //     started from the caller's guess (the semi-implicit step passes its last solution).
 // docs/performance.md, "The pressure solve alone", measures both; PressureSolver::Automatic
 // takes the direct one in 1D and 2D, and in 3D up to kDirectCellLimit3D cells, CG beyond.
@@ -23,6 +24,7 @@
 #include "grid/Grid.hpp"
 #include "io/CaseConfig.hpp"
 #include "solver/SlabCholesky.hpp"
+#include "solver/TridiagonalCholesky.hpp"
 
 namespace qs {
 
@@ -65,7 +67,9 @@ public:
     int iterations() const { return iterations_; }   ///< CG's last, 0 for Direct
     Real error() const { return error_; }            ///< CG's last relative residual
     Index cells() const { return static_cast<Index>(A_.rows()); }
-    int slabs() const { return direct_ ? ldlt_.slabs() : 1; }
+    int slabs() const { return direct_ && !tridiagonal_ ? ldlt_.slabs() : 1; }
+    /// The solver as the run's summary names it.
+    const char* solverName() const;
     /// The matrix as assembled (cell order, both triangles): for the benchmarks and tests.
     const Eigen::SparseMatrix<double>& matrix() const { return A_; }
 
@@ -73,10 +77,11 @@ private:
     using Matrix = Eigen::SparseMatrix<double>;  // column-major: Eigen's sparse solvers' own layout
     Matrix A_;
     SlabCholesky ldlt_;
+    TridiagonalCholesky tridiagonalLdlt_;
     Eigen::ConjugateGradient<Matrix, Eigen::Lower | Eigen::Upper, Eigen::IncompleteCholesky<double>> cg_;
     std::vector<signed char> slots_;  ///< [cell][3^D] place of each neighbour in the cell's column, -1 outside
     int stencil_ = 0;
-    bool direct_ = true, analysed_ = false;  ///< analysed_: CG's pattern (the direct one is analysed in build)
+    bool direct_ = true, tridiagonal_ = false, analysed_ = false;  ///< analysed_: CG's pattern (the direct one is analysed in build)
     int iterations_ = 0;
     Real error_ = 0;
 };

@@ -29,9 +29,7 @@ SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context)
     gateWeight_.assign(ctx_.masks.gateNodes.size(), 0.0);
     for (auto* v : {&rhs_, &dp_, &gateY_, &heldValue_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
     system_.build(ctx_.grid, ctx_.config.time.pressureSolver);
-    stats_.solver = !system_.direct()         ? "conjugate gradients, incomplete Cholesky (Eigen)"
-                    : system_.slabs() == 1 ? "sparse Cholesky (Eigen SimplicialLDLT)"
-                                           : "sparse Cholesky (Eigen SimplicialLDLT), slabs side by side";
+    stats_.solver = system_.solverName();
 }
 
 // CG's starting guesses, dp and y, one after the other
@@ -159,28 +157,32 @@ void SemiImplicitIntegrator<D>::gateResponse(const StepInputs& in) {
 // Column c of (S + dt^2 D B D^T), and b_c = -dt (D Phi*)_c less what the held cells' known
 // increments contribute. Each column is written by its own cell, so the loop runs in parallel
 // and the sums do not depend on the threads; the entry (c, c') sums over the shared nodes in
-// ascending order in both columns, so the matrix is symmetric to the bit.
+// ascending order in both columns, so the matrix is symmetric to the bit. The entries are summed
+// in a local array by the neighbour's offset and written to the matrix once: summing in the
+// matrix's own values made each += wait on the store before it (a fifth of the 1D step's
+// assembly, docs/performance.md).
 template <int D>
 void SemiImplicitIntegrator<D>::assemble(Real dt) {
     const Grid<D>& grid = ctx_.grid;
     const CellWater<D>& water = ctx_.water;
     const NodeFields<D>& nodes = ctx_.nodes;
     const Real KL = ctx_.config.liquid.bulkModulus, dt2 = dt * dt;
+    constexpr int kStencil = D == 1 ? 3 : D == 2 ? 9 : 27;
     // the rank-one gate term's share from held cells, a_R . dp over them
     Real heldGate = 0;
     if (gateGamma_ > 0)
         for (Index c = 0; c < grid.cellStride(D - 1); ++c)
             if (held_[c]) heldGate += gateRight_[c] * heldValue_[c];
     forAll(grid.numCells(), [&](Index c) {
-        Real* value = system_.values(c);
-        for (Index k = 0; k < system_.size(c); ++k) value[k] = 0;
+        Real entry[kStencil] = {};  // by the neighbour's offset code
         const int centre[D] = {};
-        const int diagonal = system_.slot(c, PressureSystem::offsetCode(centre, D));
+        const int diagonal = PressureSystem::offsetCode(centre, D);
         if (held_[c]) {
             // an identity row with a zero right-hand side, its known increment written after the
             // solve: a row in Pa among rows in m3 would dominate CG's stopping test
-            value[diagonal] = 1;
+            entry[diagonal] = 1;
             rhs_[c] = 0;
+            writeColumn(c, entry);
             return;
         }
         const Real V = water.weight[c];
@@ -191,25 +193,42 @@ void SemiImplicitIntegrator<D>::assemble(Real dt) {
                 const Index k = i * D + a;
                 const Real Dc = V * grid.divergenceWeight(c, corner, a);
                 divergence += Dc * ((1 - n) * predS_[k] + n * predL_[k]);
-                const Real beta = (1 - n) * rS_[k] + n * rL_[k];
+                const Real beta = dt2 * ((1 - n) * rS_[k] + n * rL_[k]);
                 if (beta == 0) continue;
                 grid.forEachCellOfNode(i, [&](Index c2, int corner2) {
                     if (!(water.weight[c2] > 0)) return;  // a dry cell: no pressure, no force
                     const Real coupling = beta * (Dc * (water.weight[c2] * grid.divergenceWeight(c2, corner2, a)));
                     if (held_[c2]) { heldSum += coupling * heldValue_[c2]; return; }
-                    int offset[D];
-                    for (int d = 0; d < D; ++d) offset[d] = ((corner >> d) & 1) - ((corner2 >> d) & 1);
-                    value[system_.slot(c, PressureSystem::offsetCode(offset, D))] += coupling;
+                    entry[neighbourCode(corner, corner2)] += coupling;
                 });
             }
         });
-        for (Index k = 0; k < system_.size(c); ++k) value[k] *= dt2;
         // the water's storage, S_c = V_c n_c / K_L; a cavity first takes up a compression:
         // S_c dp_c + dt (D Phi)_c = -V_c n_c cavity_c (physics/Cavitation.hpp)
-        value[diagonal] += V * water.porosity[c] / KL;
-        rhs_[c] = -dt * divergence - dt2 * heldSum - V * water.porosity[c] * water.cavity[c] -
+        entry[diagonal] += V * water.porosity[c] / KL;
+        writeColumn(c, entry);
+        rhs_[c] = -dt * divergence - heldSum - V * water.porosity[c] * water.cavity[c] -
                   gateGamma_ * gateLeft_[c] * heldGate;
     });
+}
+
+// The offset code (PressureSystem::offsetCode) of the cell whose `corner2` is the node that is
+// the `corner` of this one
+template <int D>
+int SemiImplicitIntegrator<D>::neighbourCode(int corner, int corner2) {
+    int code = 0;
+    for (int d = D - 1; d >= 0; --d) code = code * 3 + ((corner >> d) & 1) - ((corner2 >> d) & 1) + 1;
+    return code;
+}
+
+// Column c's values from its entries by offset code; each stored value has one code
+template <int D>
+void SemiImplicitIntegrator<D>::writeColumn(Index c, const Real* entry) {
+    Real* value = system_.values(c);
+    for (int code = 0; code < (D == 1 ? 3 : D == 2 ? 9 : 27); ++code) {
+        const int slot = system_.slot(c, code);
+        if (slot >= 0) value[slot] = entry[code];
+    }
 }
 
 template <int D>

@@ -48,6 +48,8 @@ private:
     void nodeResponse(const StepInputs& in);
     void gateResponse(const StepInputs& in);
     void assemble(Real dt);
+    static int neighbourCode(int corner, int corner2);
+    void writeColumn(Index c, const Real* entry);
     void solve(Real dt, Real time);
     void correct(Real dt);
     bool updateHeldCells(Real dt);
