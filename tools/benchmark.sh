@@ -22,7 +22,8 @@
 #                                      Eigen's sparse Cholesky against CG with incomplete Cholesky,
 #                                      and BM_PressureAMG2D/3D: CG with hypre's BoomerAMG, 1e3 to
 #                                      1e6 cells (where hypre is installed), and BM_SlabCholesky:
-#                                      the 2D direct solve in one slab or two, on 1 and 2 threads.
+#                                      the 2D direct solve in one slab or two, on 1 and 2 threads;
+#                                      BM_Column1D: the 1D column's tridiagonal solve against Eigen's.
 #                                      About 45 minutes (SCHEMES_END=10 for 10 s runs, SCHEMES_END_2D
 #                                      for the 2D rows alone)
 # Speed is measured here, never by timed tests.
@@ -92,8 +93,9 @@ for label, r in by.items():
     print(f"{label}: semi-implicit step {se / ss:.2f} x the explicit one, wall time {we / ws:.2f} x shorter")
 PY
     echo "== the pressure solve alone (BM_Pressure2D/3D: cells per axis / 1 direct, 2 CG;"
-    echo "   BM_PressureAMG2D/3D: cells per axis / 1 AMG set up each solve, 0 set up once; real water)"
-    OMP_NUM_THREADS=1 "$build_dir/tools/benchmarks/quicksand_benchmarks" --benchmark_filter='BM_Pressure' \
+    echo "   BM_PressureAMG2D/3D: cells per axis / 1 AMG set up each solve, 0 set up once;"
+    echo "   BM_Column1D: cells / 0 LAPACK's tridiagonal, 1 Eigen's SimplicialLDLT; real water)"
+    OMP_NUM_THREADS=1 "$build_dir/tools/benchmarks/quicksand_benchmarks" --benchmark_filter='BM_Pressure|BM_Column1D' \
         2>&1 | grep -E '^(BM_|---|Benchmark)' || true
     for threads in 1 2; do
         echo "== the 2D direct solve in one slab or two side by side (BM_SlabCholesky: cells across /"

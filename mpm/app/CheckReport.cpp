@@ -152,6 +152,10 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         << " m/s, c_skeleton = " << cSkeleton << " m/s; dt = courant h / " << (semi ? "c_skeleton" : "c_fast")
         << " = " << dtStable << " s ("
         << stepCount(config.time.end / (config.time.dt ? *config.time.dt : dtStable)) << " steps to t = " << config.time.end << " s)\n";
+    out << "  water: K_L = " << config.liquid.bulkModulus << " Pa"
+        << (config.liquid.bulkModulusGiven ? "" : semi ? " (not given: real water, the semi-implicit scheme's default)"
+                                                       : " (not given: the paper's soft water, the explicit scheme's default)")
+        << "\n";
     if (!semi && cFast > 2 * cSkeleton)
         out << "  time.scheme = \"semi_implicit\" would step " << cFast / cSkeleton
             << " times further (its step follows the skeleton's wave, not the water's)\n";

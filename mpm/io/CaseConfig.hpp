@@ -123,8 +123,14 @@ struct LayerConfig {
 };
 
 struct LiquidConfig {
+    /// Pa: the paper's deliberately soft water (a hundredth of real water's), the explicit
+    /// scheme's default, whose step it lets be ten times longer
+    static constexpr double kSoftBulkModulus = 2.128e7;
+    /// Pa: water as it is, the semi-implicit scheme's default (its step does not see K_L)
+    static constexpr double kRealBulkModulus = 2.2e9;
     double density = 998.2;            ///< kg/m3, rho_L
-    double bulkModulus = 2.128e7;      ///< Pa, K_L
+    double bulkModulus = kSoftBulkModulus;  ///< Pa, K_L; when not given, by time.scheme
+    bool bulkModulusGiven = true;      ///< false: K_L is the scheme's default
     double viscosity = 8.91e-4;        ///< Pa s, mu
     double cavitationPressure = 0.0;   ///< Pa (gauge), lowest pore pressure the liquid takes
     bool freeSurfaceZeroPressure = false;  ///< set p = 0 on free-surface liquid points

@@ -292,7 +292,10 @@ private:
         const Section s = root.subsection("liquid", kLiquid, false);
         LiquidConfig& l = c_.liquid;
         l.density = s.optionalNumber("density", 998.2, positive("kg/m3"));
-        l.bulkModulus = s.optionalNumber("bulk_modulus", 2.128e7, positive("Pa"));
+        // its default follows time.scheme, read later (readTime)
+        const std::optional<double> bulkModulus = s.optionalNumber("bulk_modulus", positive("Pa"));
+        l.bulkModulusGiven = bulkModulus.has_value();
+        l.bulkModulus = bulkModulus.value_or(LiquidConfig::kSoftBulkModulus);
         l.viscosity = s.optionalNumber("viscosity", 8.91e-4, positive("Pa s"));
         if (l.viscosity < kMinViscosity)
             s.fail("viscosity",
@@ -674,6 +677,10 @@ private:
         TimeConfig& t = c_.time;
         t.end = s.requiredNumber("end", positive("s"), "simulated end time");
         t.scheme = s.choice("scheme", TimeScheme::Explicit, kTimeSchemeOptions);
+        // the water a scheme is meant for: soft for the explicit step, real for the semi-implicit
+        if (!c_.liquid.bulkModulusGiven)
+            c_.liquid.bulkModulus = t.scheme == TimeScheme::SemiImplicit ? LiquidConfig::kRealBulkModulus
+                                                                         : LiquidConfig::kSoftBulkModulus;
         t.pressureSolver = s.choice("pressure_solver", PressureSolver::Automatic, kPressureSolverOptions);
         t.courant = s.optionalNumber("courant", 0.4, between(0, true, 0.5, false));
         t.dt = s.optionalNumber("dt", positive("s"));

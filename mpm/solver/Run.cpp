@@ -328,6 +328,10 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
                     solver.solid().size(),
                     solver.liquid().size(), solver.time(), end,
                     windowed ? (", coupled to " + model->name()).c_str() : "");
+    if (!options.quiet && !config.liquid.bulkModulusGiven)
+        std::printf("quicksand: water K_L = %.4g Pa (liquid.bulk_modulus not given: the %s scheme's default, %s)\n",
+                    config.liquid.bulkModulus, solver.scheme() == TimeScheme::SemiImplicit ? "semi-implicit" : "explicit",
+                    solver.scheme() == TimeScheme::SemiImplicit ? "real water" : "the paper's soft water");
     if (!options.quiet && windowed && !model->description().empty())
         std::printf("quicksand: %s: %s\n", model->name().c_str(), model->description().c_str());
     if (couplingLog.is_open() && windowed)

@@ -14,7 +14,13 @@
 // in a column of cells (26 x 98: piping2D on 3.1 mm cells), in one slab or split into two
 // factorised side by side, with OpenMP's threads as set (OMP_NUM_THREADS=1 or 2). Counter:
 // operations, the larger slab's sum of squared column counts of its factor.
+//
+// BM_Column1D/<cells>/<solver>: a 1D column's factorisation and one solve (the Deltares column
+// has 27 cells on 9.3 mm); solver 0: the step's, LAPACK's tridiagonal dpttrf/dpttrs
+// (solver/TridiagonalCholesky.hpp); 1: Eigen's SimplicialLDLT, which 1D used before.
 #include <benchmark/benchmark.h>
+
+#include <Eigen/SparseCholesky>
 
 #include "SandSystem.hpp"
 
@@ -58,8 +64,34 @@ void BM_SlabCholesky(benchmark::State& state) {
     state.SetItemsProcessed(state.iterations() * grid.numCells());
 }
 
+void BM_Column1D(benchmark::State& state) {
+    const qs::Grid<1> grid(qs::IVec<1>{state.range(0)}, 0.0093, 1.0);
+    qs::PressureSystem system;
+    system.build(grid, qs::PressureSolver::Direct);
+    Eigen::VectorXd b(grid.numCells()), x(grid.numCells());
+    qs::bench::fillSandSystem(grid, system, b);
+    if (state.range(1) == 0) {
+        for (auto _ : state) {
+            if (!system.factorize()) state.SkipWithError("the factorisation failed");
+            system.solve(b, x);
+            benchmark::DoNotOptimize(x.data());
+        }
+    } else {
+        Eigen::SimplicialLDLT<Eigen::SparseMatrix<double>, Eigen::Upper, Eigen::NaturalOrdering<int>> eigen;
+        eigen.analyzePattern(system.matrix());
+        for (auto _ : state) {
+            eigen.factorize(system.matrix());
+            if (eigen.info() != Eigen::Success) state.SkipWithError("the factorisation failed");
+            x = eigen.solve(b);
+            benchmark::DoNotOptimize(x.data());
+        }
+    }
+    state.SetItemsProcessed(state.iterations() * grid.numCells());
+}
+
 }  // namespace
 
+BENCHMARK(BM_Column1D)->ArgsProduct({{27, 270}, {0, 1}})->Unit(benchmark::kNanosecond);
 BENCHMARK(BM_SlabCholesky)->ArgsProduct({{26}, {98}, {1, 2}})->Args({100, 100, 1})->Args({100, 100, 2})
     ->Unit(benchmark::kMillisecond);
 

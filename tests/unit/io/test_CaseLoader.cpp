@@ -157,6 +157,25 @@ TEST(CaseLoader, MinimalCaseGetsTheDefaults) {
     EXPECT_DOUBLE_EQ(c.output.progressInterval, 2.0);
 }
 
+// The water's default follows the scheme (issue 24: real water is the semi-implicit step's
+// default); a given K_L holds under both
+TEST(CaseLoader, TheWatersDefaultFollowsTheTimeScheme) {
+    const CaseConfig explicitScheme = parseCase(kMinimal, kFile);
+    EXPECT_DOUBLE_EQ(explicitScheme.liquid.bulkModulus, 2.128e7);
+    EXPECT_FALSE(explicitScheme.liquid.bulkModulusGiven);
+    const CaseConfig semi = parseCase(replaced(kMinimal, "end = 1.0", "end = 1.0\nscheme = \"semi_implicit\""), kFile);
+    EXPECT_DOUBLE_EQ(semi.liquid.bulkModulus, 2.2e9);
+    EXPECT_FALSE(semi.liquid.bulkModulusGiven);
+    for (const char* scheme : {"explicit", "semi_implicit"}) {
+        SCOPED_TRACE(scheme);
+        const std::string text = replaced(kMinimal, "end = 1.0", std::string("end = 1.0\nscheme = \"") + scheme + "\"") +
+                                 "\n[liquid]\nbulk_modulus = 1.5e8\n";
+        const CaseConfig given = parseCase(text, kFile);
+        EXPECT_DOUBLE_EQ(given.liquid.bulkModulus, 1.5e8);
+        EXPECT_TRUE(given.liquid.bulkModulusGiven);
+    }
+}
+
 TEST(CaseLoader, FullCaseReadsEveryKey) {
     const std::string text = R"(title = "Deltares column, simulation A"
 gravity = 9.806

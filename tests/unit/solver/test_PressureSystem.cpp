@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <string>
 
 namespace qs {
 namespace {
@@ -122,4 +123,18 @@ TEST(PressureSystem, TheDirectSolveIsSplitInSlabsIn2DFromAThousandCells) {
 }
 
 }  // namespace
+// The 1D direct solve is LAPACK's tridiagonal one (TridiagonalCholesky); 2D and 3D keep Eigen's
+TEST(PressureSystem, The1DDirectSolveIsTridiagonal) {
+    auto nameOf = [](const auto& grid, PressureSolver solver) {
+        PressureSystem system;
+        system.build(grid, solver);
+        return std::string(system.solverName());
+    };
+    EXPECT_NE(nameOf(Grid<1>(IVec<1>{27}, 0.0093, 1.0), PressureSolver::Direct).find("tridiagonal"), std::string::npos);
+    EXPECT_NE(nameOf(Grid<1>(IVec<1>{27}, 0.0093, 1.0), PressureSolver::Automatic).find("tridiagonal"), std::string::npos);
+    EXPECT_EQ(nameOf(Grid<1>(IVec<1>{27}, 0.0093, 1.0), PressureSolver::ConjugateGradient).find("tridiagonal"),
+              std::string::npos);
+    EXPECT_EQ(nameOf(Grid<2>(IVec<2>{9, 27}, 0.0093, 1.0), PressureSolver::Direct).find("tridiagonal"), std::string::npos);
+}
+
 }  // namespace qs
