@@ -43,6 +43,8 @@ public:
     IntegratorStats stats() const override { return stats_; }
     std::vector<double> saveState() const override;
     void restoreState(const std::vector<double>& state) override;
+    /// Pa per cell, the last step's pressure increment dp (a held cell's: its known one)
+    const Eigen::VectorXd& pressureIncrement() const { return dp_; }
 
 private:
     void nodeResponse(const StepInputs& in);
