@@ -153,12 +153,14 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         << " = " << dtStable << " s ("
         << stepCount(config.time.end / (config.time.dt ? *config.time.dt : dtStable)) << " steps to t = " << config.time.end << " s)\n";
     out << "  water: K_L = " << config.liquid.bulkModulus << " Pa"
-        << (config.liquid.bulkModulusGiven ? "" : semi ? " (not given: real water, the semi-implicit scheme's default)"
-                                                       : " (not given: the paper's soft water, the explicit scheme's default)")
+        << (config.liquid.bulkModulusGiven ? "" : std::string(" (not given: ") + config.liquid.defaultWaterName() + ")")
         << "\n";
     if (!semi && cFast > 2 * cSkeleton)
         out << "  time.scheme = \"semi_implicit\" would step " << cFast / cSkeleton
-            << " times further (its step follows the skeleton's wave, not the water's)\n";
+            << " times further (its step follows the skeleton's wave, not the water's)"
+            << (config.liquid.bulkModulusGiven ? "" : "; without liquid.bulk_modulus it takes real water, 2.2e9 Pa: "
+                                                      "give bulk_modulus = 2.128e7 to keep this water")
+            << "\n";
     printRunSize(config, out);
     out << "points: " << config.points.solidPerCell << " solid and " << config.points.liquidPerCell
         << " liquid per sand cell and axis, " << freeWaterPointsPerCell(config)

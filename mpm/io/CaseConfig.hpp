@@ -130,7 +130,15 @@ struct LiquidConfig {
     static constexpr double kRealBulkModulus = 2.2e9;
     double density = 998.2;            ///< kg/m3, rho_L
     double bulkModulus = kSoftBulkModulus;  ///< Pa, K_L; when not given, by time.scheme
-    bool bulkModulusGiven = true;      ///< false: K_L is the scheme's default
+    /// false: K_L is the default of the scheme the case was loaded with (CaseLoader), which code
+    /// that switches time.scheme afterwards (the verification suite) leaves as it was
+    bool bulkModulusGiven = true;
+    /// Which default water K_L is, for the messages: "real water, the semi-implicit scheme's
+    /// default" or "the paper's soft water, the explicit scheme's default"
+    const char* defaultWaterName() const {
+        return bulkModulus == kRealBulkModulus ? "real water, the semi-implicit scheme's default"
+                                               : "the paper's soft water, the explicit scheme's default";
+    }
     double viscosity = 8.91e-4;        ///< Pa s, mu
     double cavitationPressure = 0.0;   ///< Pa (gauge), lowest pore pressure the liquid takes
     bool freeSurfaceZeroPressure = false;  ///< set p = 0 on free-surface liquid points

@@ -166,6 +166,7 @@ private:
     void advanceReservoir();          // Gate.cpp
     void carrySandOut(Real zOverflow);
     void checkHealth() const;
+    void checkWater(const CheckpointData& data, bool semi) const;  // SolverCheckpoint.cpp
 
     // helpers
     void allocate();

@@ -329,9 +329,8 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
                     solver.liquid().size(), solver.time(), end,
                     windowed ? (", coupled to " + model->name()).c_str() : "");
     if (!options.quiet && !config.liquid.bulkModulusGiven)
-        std::printf("quicksand: water K_L = %.4g Pa (liquid.bulk_modulus not given: the %s scheme's default, %s)\n",
-                    config.liquid.bulkModulus, solver.scheme() == TimeScheme::SemiImplicit ? "semi-implicit" : "explicit",
-                    solver.scheme() == TimeScheme::SemiImplicit ? "real water" : "the paper's soft water");
+        std::printf("quicksand: water K_L = %.4g Pa (liquid.bulk_modulus not given: %s)\n",
+                    config.liquid.bulkModulus, config.liquid.defaultWaterName());
     if (!options.quiet && windowed && !model->description().empty())
         std::printf("quicksand: %s: %s\n", model->name().c_str(), model->description().c_str());
     if (couplingLog.is_open() && windowed)

@@ -167,7 +167,6 @@ void SemiImplicitIntegrator<D>::assemble(Real dt) {
     const CellWater<D>& water = ctx_.water;
     const NodeFields<D>& nodes = ctx_.nodes;
     const Real KL = ctx_.config.liquid.bulkModulus, dt2 = dt * dt;
-    constexpr int kStencil = D == 1 ? 3 : D == 2 ? 9 : 27;
     // the rank-one gate term's share from held cells, a_R . dp over them
     Real heldGate = 0;
     if (gateGamma_ > 0)
@@ -225,7 +224,7 @@ int SemiImplicitIntegrator<D>::neighbourCode(int corner, int corner2) {
 template <int D>
 void SemiImplicitIntegrator<D>::writeColumn(Index c, const Real* entry) {
     Real* value = system_.values(c);
-    for (int code = 0; code < (D == 1 ? 3 : D == 2 ? 9 : 27); ++code) {
+    for (int code = 0; code < kStencil; ++code) {
         const int slot = system_.slot(c, code);
         if (slot >= 0) value[slot] = entry[code];
     }
@@ -236,7 +235,7 @@ void SemiImplicitIntegrator<D>::solve(Real dt, Real time) {
     auto fail = [&](const std::string& what) {
         std::ostringstream s;
         s << "numerical failure at t = " << time << " s: the semi-implicit step's pressure solve "
-          << what << " (" << system_.cells() << " cells, " << (system_.direct() ? "sparse Cholesky" : "CG")
+          << what << " (" << system_.cells() << " cells, " << system_.solverName()
           << ", dt = " << dt << " s); a smaller time.courant, or time.scheme = \"explicit\", may get past it";
         throw Error(s.str());
     };

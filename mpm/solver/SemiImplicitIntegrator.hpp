@@ -50,6 +50,7 @@ private:
     void nodeResponse(const StepInputs& in);
     void gateResponse(const StepInputs& in);
     void assemble(Real dt);
+    static constexpr int kStencil = D == 1 ? 3 : D == 2 ? 9 : 27;  ///< a cell's neighbours and itself
     static int neighbourCode(int corner, int corner2);
     void writeColumn(Index c, const Real* entry);
     void solve(Real dt, Real time);

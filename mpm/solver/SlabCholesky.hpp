@@ -45,6 +45,10 @@ class SlabCholesky {
 public:
     using Matrix = Eigen::SparseMatrix<double>;
 
+    /// Eigen's LLT() leaves its info unset, and moving or assigning the object reads it (UBSan):
+    /// an empty factorisation sets it
+    SlabCholesky() { schur_.compute(Eigen::MatrixXd(0, 0)); }
+
     /// A's pattern (symmetric, both triangles stored, column-major), each cell's layer along the
     /// axis to split, in [0, layers), and the number of slabs asked for (fewer if the axis is too
     /// short for each slab to keep kMinLayers layers of its own).

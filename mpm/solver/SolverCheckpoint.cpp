@@ -113,6 +113,27 @@ const std::vector<double>& finiteValues(const CheckpointData& data, const char* 
 
 }  // namespace
 
+// The water the checkpoint was written with: the semi-implicit step's size does not see K_L, so
+// the dt check below cannot catch a change of water. A checkpoint without the entry (before
+// 2026-12-06) was written when liquid.bulk_modulus defaulted to the soft 2.128e7 Pa under both
+// schemes; a semi-implicit case that leaves the key out now means real water.
+template <int D>
+void DoublePointSolver<D>::checkWater(const CheckpointData& data, bool semi) const {
+    const double K = config_.liquid.bulkModulus;
+    if (!data.has("bulk_modulus")) {
+        QS_CHECK(!semi || config_.liquid.bulkModulusGiven,
+                 "the checkpoint predates liquid.bulk_modulus's default by time.scheme (2026-12-06): it was "
+                 "written with the soft 2.128e7 Pa unless the case gave the key, and the semi-implicit scheme "
+                 "now defaults to real water, 2.2e9 Pa; give liquid.bulk_modulus = 2.128e7 to resume it as it was");
+        return;
+    }
+    const double written = data.scalar("bulk_modulus");
+    QS_CHECK(std::abs(written - K) <= 1e-12 * K,
+             "the checkpoint was written with liquid.bulk_modulus = " << written << " Pa, the case now gives " << K
+                 << " Pa" << (config_.liquid.bulkModulusGiven ? "" : " (the key left out: the scheme's default)")
+                 << ": resume with the water it was written with");
+}
+
 template <int D>
 void DoublePointSolver<D>::saveState(CheckpointData& data) const {
     auto& self = const_cast<DoublePointSolver<D>&>(*this);  // forEachField is non-const by design
@@ -121,6 +142,7 @@ void DoublePointSolver<D>::saveState(CheckpointData& data) const {
     data.putScalar("steps", static_cast<double>(steps_));
     data.putScalar("dt", dt_);
     data.putScalar("semi_implicit", config_.time.scheme == TimeScheme::SemiImplicit ? 1 : 0);
+    data.putScalar("bulk_modulus", config_.liquid.bulkModulus);
     putSet(data, "solid", self.solid_);
     putSet(data, "liquid", self.liquid_);
     data.put("rel_speed", nodes_.relSpeed);
@@ -147,6 +169,7 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
              "the checkpoint was written by the " << (semi ? "semi-implicit" : "explicit")
                  << " scheme, the case now asks for time.scheme = \""
                  << (semi ? "explicit" : "semi_implicit") << "\": resume with the scheme it was written with");
+    checkWater(data, semi);
     QS_CHECK(std::abs(data.scalar("dt") - dt_) <= 1e-12 * dt_,
              "the checkpoint was written with dt = " << data.scalar("dt") << " s, the case now gives "
                                                      << dt_ << " s: grid or material data changed");

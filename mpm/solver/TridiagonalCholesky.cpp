@@ -1,5 +1,7 @@
 #include "solver/TridiagonalCholesky.hpp"
 
+#include <algorithm>
+
 #include "core/Error.hpp"
 
 // LAPACK (Fortran calling convention: every argument by address; no character arguments here)
@@ -45,11 +47,13 @@ bool TridiagonalCholesky::factorize(const Matrix& A) {
     const int n = static_cast<int>(rows_);
     int info = 0;
     if (n > 0) dpttrf_(&n, d_.data(), e_.data(), &info);
-    // dpttrf stops at a pivot d <= 0, which a NaN passes
-    return info == 0 && (d_.array() > 0).all() && e_.allFinite();
+    // dpttrf stops at a pivot d <= 0, which a NaN passes; an infinite one would solve to 0
+    return info == 0 && (d_.array() > 0).all() && d_.allFinite() && e_.allFinite();
 }
 
 void TridiagonalCholesky::solve(const Eigen::VectorXd& b, Eigen::VectorXd& x) const {
+    QS_CHECK(b.size() == rows_, "TridiagonalCholesky::solve: a right-hand side of " << b.size() << " rows, the matrix has "
+                                                                                   << rows_);
     if (&b != &x) x = b;  // no allocation when x has the size already
     const int n = static_cast<int>(rows_), one = 1, ldb = std::max(n, 1);
     int info = 0;

@@ -10,6 +10,7 @@
 // semi-implicit step (docs/performance.md, "The semi-implicit step").
 #include <Eigen/Core>
 #include <Eigen/SparseCore>
+#include <vector>
 
 #include "core/Types.hpp"
 

@@ -135,6 +135,22 @@ TEST(PressureSystem, The1DDirectSolveIsTridiagonal) {
     EXPECT_EQ(nameOf(Grid<1>(IVec<1>{27}, 0.0093, 1.0), PressureSolver::ConjugateGradient).find("tridiagonal"),
               std::string::npos);
     EXPECT_EQ(nameOf(Grid<2>(IVec<2>{9, 27}, 0.0093, 1.0), PressureSolver::Direct).find("tridiagonal"), std::string::npos);
+    // and it is what solves: the same bits as TridiagonalCholesky called on the matrix itself
+    const Grid<1> column(IVec<1>{27}, 0.0093, 1.0);
+    PressureSystem system;
+    system.build(column, PressureSolver::Direct);
+    for (Index c = 0; c < column.numCells(); ++c) {
+        double* v = system.values(c);
+        for (Index k = 0; k < system.size(c); ++k) v[k] = (system.rows(c)[k] == c ? 2.5 + 0.1 * c : -1.0);
+    }
+    ASSERT_TRUE(system.factorize());
+    Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(27, -1.0, 3.0), x(27), y(27);
+    ASSERT_TRUE(system.solve(b, x));
+    TridiagonalCholesky ldlt;
+    ldlt.analyse(system.matrix());
+    ASSERT_TRUE(ldlt.factorize(system.matrix()));
+    ldlt.solve(b, y);
+    for (Index c = 0; c < 27; ++c) EXPECT_EQ(x[c], y[c]) << "cell " << c;
 }
 
 }  // namespace qs

@@ -18,7 +18,7 @@ namespace {
 
 // The semi-implicit step's matrix S + D B D^T of a 1D column (as SemiImplicitIntegrator
 // assembles it): each node's response beta drawn at random over two decades, a storage s per
-// cell, and every `heldEvery`-th cell an identity row its neighbours do not see.
+// cell, and every `heldEvery`-th cell and the last an identity row its neighbours do not see.
 Eigen::SparseMatrix<double> columnMatrix(Index cells, double storage, int heldEvery, unsigned seed) {
     const Grid<1> grid(IVec<1>{cells}, 0.0093, 1.0);
     PressureSystem system;
@@ -27,7 +27,7 @@ Eigen::SparseMatrix<double> columnMatrix(Index cells, double storage, int heldEv
     std::uniform_real_distribution<double> decades(0.0, 2.0);
     std::vector<double> beta(grid.numNodes());
     for (auto& b : beta) b = std::pow(10.0, decades(random));
-    auto held = [&](Index c) { return heldEvery > 0 && c % heldEvery == 0; };
+    auto held = [&](Index c) { return heldEvery > 0 && (c % heldEvery == 0 || c == cells - 1); };
     for (Index c = 0; c < cells; ++c) {
         double* value = system.values(c);
         for (Index k = 0; k < system.size(c); ++k) value[k] = 0;
@@ -92,9 +92,9 @@ TEST(TridiagonalCholesky, SolvesInPlace) {
     EXPECT_LT((A * x - b).norm(), 1e-9 * b.norm());
 }
 
-// A pivot at or below zero, or one that is not a number, is refused
+// A pivot at or below zero, one that is not a number or an infinite one is refused
 TEST(TridiagonalCholesky, AMatrixThatIsNotPositiveDefiniteIsRefused) {
-    for (double bad : {-1.0, std::numeric_limits<double>::quiet_NaN()})
+    for (double bad : {-1.0, std::numeric_limits<double>::quiet_NaN(), std::numeric_limits<double>::infinity()})
         for (Index where : {0, 13, 26}) {
             SCOPED_TRACE(testing::Message() << bad << " at " << where);
             Eigen::SparseMatrix<double> A = columnMatrix(27, 1e-3, 0, 5);
@@ -109,6 +109,16 @@ TEST(TridiagonalCholesky, AMatrixThatIsNotPositiveDefiniteIsRefused) {
     ldlt.analyse(A);
     A.coeffRef(14, 13) = A.coeffRef(13, 14) = -2 * std::sqrt(A.coeff(13, 13) * A.coeff(14, 14));
     EXPECT_FALSE(ldlt.factorize(A));
+}
+
+// A right-hand side of another size is an error, not a write past x's end
+TEST(TridiagonalCholesky, ARightHandSideOfAnotherSizeIsRefused) {
+    const Eigen::SparseMatrix<double> A = columnMatrix(27, 1e-3, 0, 5);
+    TridiagonalCholesky ldlt;
+    ldlt.analyse(A);
+    ASSERT_TRUE(ldlt.factorize(A));
+    Eigen::VectorXd x;
+    EXPECT_THROW(ldlt.solve(Eigen::VectorXd::Ones(20), x), Error);
 }
 
 // A 2D grid's pattern is not tridiagonal: refused when analysed, not solved wrongly
