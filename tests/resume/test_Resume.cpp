@@ -47,6 +47,30 @@ void expectSameLines(const fs::path& straight, const fs::path& resumed) {
     for (std::size_t k = 0; k < la.size(); ++k) EXPECT_EQ(la[k], lb[k]) << resumed << " line " << k + 1;
 }
 
+/// What a fresh 1D solver of the case says when it loads the checkpoint: its error, or "accepted".
+std::string loadingMessage(const CaseConfig& c, const CheckpointData& data) {
+    const auto reservoir = makeReservoirModel(c);
+    DoublePointSolver<1> fresh(c, *reservoir);
+    try {
+        fresh.loadState(data);
+    } catch (const Error& e) {
+        return e.what();
+    }
+    return "accepted";
+}
+
+/// The checkpoint without one entry, as an older version wrote it.
+CheckpointData without(const CheckpointData& data, const std::string& entry) {
+    CheckpointData older;
+    for (const std::string& name : data.names()) {
+        if (name == entry) continue;
+        try { older.put(name, data.doubles(name)); continue; } catch (const Error&) {}
+        try { older.put(name, data.integers(name)); continue; } catch (const Error&) {}
+        older.putScalar(name, data.scalar(name));
+    }
+    return older;
+}
+
 }  // namespace
 
 TEST(Resume, ResumedRunMatchesStraightRun) {
@@ -228,14 +252,7 @@ TEST(Resume, ACheckpointThatNoStepCouldTakeIsRefusedNamingWhy) {
         std::vector<double> v = bad.doubles(entry);
         v.at(index) = value;
         bad.put(entry, v);
-        const auto freshReservoir = makeReservoirModel(c);
-        DoublePointSolver<1> fresh(c, *freshReservoir);
-        try {
-            fresh.loadState(bad);
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("accepted");
+        return loadingMessage(c, bad);
     };
     const double inf = std::numeric_limits<double>::infinity();
     EXPECT_NE(refusal("solid_field0", 3, -inf).find("'solid_field0' value 3 is -inf"), std::string::npos);
@@ -268,13 +285,7 @@ TEST(Resume, ACheckpointWrittenBeforeAPICStillLoads) {
     double largest = 0;
     for (double value : solver.solid().velocityGradient) largest = std::max(largest, std::abs(value));
     ASSERT_GT(largest, 0.0) << "the column is not moving: C would be zero whether saved or not";
-    CheckpointData older;  // the same without field 9
-    for (const std::string& name : now.names()) {
-        if (name == "solid_field9") continue;
-        try { older.put(name, now.doubles(name)); continue; } catch (const Error&) {}
-        try { older.put(name, now.integers(name)); continue; } catch (const Error&) {}
-        older.putScalar(name, now.scalar(name));
-    }
+    const CheckpointData older = without(now, "solid_field9");
     const auto r1 = makeReservoirModel(c);
     DoublePointSolver<1> fromOlder(c, *r1);
     ASSERT_NO_THROW(fromOlder.loadState(older));
@@ -303,25 +314,12 @@ TEST(Resume, ACheckpointOfAnotherWaterIsRefused) {
         CaseConfig other = c;
         other.liquid.bulkModulus = bulkModulus;
         other.liquid.bulkModulusGiven = given;
-        const auto r = makeReservoirModel(other);
-        DoublePointSolver<1> fresh(other, *r);
-        try {
-            fresh.loadState(data);
-        } catch (const Error& e) {
-            return std::string(e.what());
-        }
-        return std::string("accepted");
+        return loadingMessage(other, data);
     };
     EXPECT_EQ(loadWith(written, c.liquid.bulkModulus, true), "accepted");
     EXPECT_NE(loadWith(written, 2.2e9, false).find("written with liquid.bulk_modulus = 2.128e+07 Pa, the case now gives 2.2e+09 Pa"),
               std::string::npos);
-    CheckpointData older;  // the same without the entry
-    for (const std::string& name : written.names()) {
-        if (name == "bulk_modulus") continue;
-        try { older.put(name, written.doubles(name)); continue; } catch (const Error&) {}
-        try { older.put(name, written.integers(name)); continue; } catch (const Error&) {}
-        older.putScalar(name, written.scalar(name));
-    }
+    const CheckpointData older = without(written, "bulk_modulus");
     EXPECT_NE(loadWith(older, 2.2e9, false).find("predates liquid.bulk_modulus's default"), std::string::npos);
     EXPECT_EQ(loadWith(older, c.liquid.bulkModulus, true), "accepted");
 }
