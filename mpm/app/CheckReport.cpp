@@ -155,12 +155,14 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
     out << "  water: K_L = " << config.liquid.bulkModulus << " Pa"
         << (config.liquid.bulkModulusGiven ? "" : std::string(" (not given: ") + config.liquid.defaultWaterName() + ")")
         << "\n";
-    if (!semi && cFast > 2 * cSkeleton)
+    if (!semi && cFast > 2 * cSkeleton) {
         out << "  time.scheme = \"semi_implicit\" would step " << cFast / cSkeleton
-            << " times further (its step follows the skeleton's wave, not the water's)"
-            << (config.liquid.bulkModulusGiven ? "" : "; without liquid.bulk_modulus it takes real water, 2.2e9 Pa: "
-                                                      "give bulk_modulus = 2.128e7 to keep this water")
-            << "\n";
+            << " times further (its step follows the skeleton's wave, not the water's)";
+        if (!config.liquid.bulkModulusGiven)
+            out << "; without liquid.bulk_modulus it takes real water, " << LiquidConfig::kRealBulkModulus
+                << " Pa: give bulk_modulus = " << config.liquid.bulkModulus << " to keep this water";
+        out << "\n";
+    }
     printRunSize(config, out);
     out << "points: " << config.points.solidPerCell << " solid and " << config.points.liquidPerCell
         << " liquid per sand cell and axis, " << freeWaterPointsPerCell(config)
