@@ -1,5 +1,6 @@
 #include "io/FieldWriter.hpp"
 
+#include <chrono>
 #include <cstring>
 
 #include <cerrno>
@@ -126,6 +127,13 @@ struct FieldWriter::Impl {
     bool stepOpen = false;
     std::vector<StepRecord> steps;
     std::vector<double> padded;  // reused between calls to avoid reallocating each step
+    bool unsynced = false;                   // files published since the last makeDurable
+    double listingInterval = 0;              // s of wall time between listings, 0: every step
+    std::chrono::steady_clock::time_point lastListing;
+    bool listingPending = false;             // steps ended but not yet listed
+    std::size_t indexedSteps = 0;            // the steps the published fields.h5 links
+    std::string xdmfBody;                    // fields.xdmf's text of steps[0, xdmfSteps)
+    std::size_t xdmfSteps = 0;
 
     std::string stepPath(const std::string& group) const { return (stepDirectory / (group + ".h5")).string(); }
     void writeDimensionAttribute(hid_t file, const std::string& path);
@@ -135,9 +143,10 @@ struct FieldWriter::Impl {
     void writeDataset(hid_t group, const std::string& groupPath, const std::string& name,
                       const void* data, hid_t memoryType, hid_t fileType, std::size_t rows, int columns,
                       const char* components);
-    void writeIndex() const;
-    void writeXdmf() const;
-    std::string xdmfText() const;
+    void writeIndex();
+    void list();
+    void writeXdmf();
+    static std::string xdmfStep(const StepRecord& step);
     bool readStep(const std::string& group, double keepBefore, StepRecord& step) const;
 };
 
@@ -187,24 +196,34 @@ void FieldWriter::Impl::writeDataset(hid_t group, const std::string& groupPath, 
     if (components) writeStringAttribute(dataset.get(), path, "components", components);
 }
 
-void FieldWriter::Impl::writeIndex() const {
+void FieldWriter::Impl::writeIndex() {
     // fields.h5 holds no data, only a link per step to its file: readers (h5py, ParaView, the
     // HDF5 C API) see one file with groups /step_NNNNNN, and HDF5 finds each linked file relative
-    // to fields.h5's own directory. It is rewritten whole, so it too is replaced only by rename.
+    // to fields.h5's own directory. It is replaced only by rename: the last one published is
+    // copied and the new steps' links added to the copy, so an output costs the same however
+    // many came before it (rewriting it whole made a long series' outputs O(n^2)).
     const std::string temporary = hdf5Path + ".tmp";
+    const std::size_t listed = steps.size() - (stepOpen ? 1 : 0);
     try {
-        Hdf5Handle file(H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose);
-        if (!file.valid()) fail(temporary, "create file");
-        const_cast<Impl*>(this)->writeDimensionAttribute(file.get(), temporary);
-        for (const StepRecord& step : steps) {
-            if (stepOpen && &step == &steps.back()) break;
-            const std::string target = std::string(kStepDirectoryName) + "/" + step.group + ".h5";
-            if (H5Lcreate_external(target.c_str(), "/", file.get(), step.group.c_str(), H5P_DEFAULT, H5P_DEFAULT) <
-                0)
-                fail(temporary, "link /" + step.group + " to " + target);
+        std::error_code copied;
+        const bool extend = indexedSteps > 0 && indexedSteps <= listed &&
+                            std::filesystem::copy_file(hdf5Path, temporary,
+                                                       std::filesystem::copy_options::overwrite_existing, copied);
+        Hdf5Handle file(extend ? H5Fopen(temporary.c_str(), H5F_ACC_RDWR, H5P_DEFAULT)
+                               : H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
+                        H5Fclose);
+        if (!file.valid()) fail(temporary, extend ? "open the copy of " + hdf5Path : "create file");
+        if (!extend) writeDimensionAttribute(file.get(), temporary);
+        for (std::size_t k = extend ? indexedSteps : 0; k < listed; ++k) {
+            const std::string target = std::string(kStepDirectoryName) + "/" + steps[k].group + ".h5";
+            if (H5Lcreate_external(target.c_str(), "/", file.get(), steps[k].group.c_str(), H5P_DEFAULT,
+                                   H5P_DEFAULT) < 0)
+                fail(temporary, "link /" + steps[k].group + " to " + target);
         }
         if (!file.close()) fail(temporary, "close file");
-        publishFile(temporary, hdf5Path);
+        publishFile(temporary, hdf5Path, Durability::Deferred);
+        indexedSteps = listed;
+        unsynced = true;
     } catch (...) {
         std::error_code ignored;
         std::filesystem::remove(temporary, ignored);
@@ -212,54 +231,72 @@ void FieldWriter::Impl::writeIndex() const {
     }
 }
 
-std::string FieldWriter::Impl::xdmfText() const {
+namespace {
+const char* const kXdmfHead =
+    "<?xml version=\"1.0\" ?>\n"
+    "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
+    "  <Domain>\n"
+    "    <Grid Name=\"points\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+const char* const kXdmfTail =
+    "    </Grid>\n"
+    "  </Domain>\n"
+    "</Xdmf>\n";
+}  // namespace
+
+// One step's entry in fields.xdmf: a spatial collection of its point sets.
+// fields.h5 and fields.xdmf anew with every step ended
+void FieldWriter::Impl::list() {
+    listingPending = true;  // until both are published
+    writeIndex();
+    writeXdmf();
+    lastListing = std::chrono::steady_clock::now();
+    listingPending = false;
+}
+
+std::string FieldWriter::Impl::xdmfStep(const StepRecord& step) {
     std::ostringstream x;
-    x << "<?xml version=\"1.0\" ?>\n"
-      << "<Xdmf Version=\"3.0\" xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n"
-      << "  <Domain>\n"
-      << "    <Grid Name=\"points\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
-    for (const StepRecord& step : steps) {
-        x << "      <Grid Name=\"" << step.group << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
-          << "        <Time Value=\"" << formatDouble(step.time) << "\"/>\n";
-        for (const SetRecord& set : step.sets) {
-            if (set.count == 0) continue;  // zero-sized DataItems break the readers
-            const std::string base = std::string(kStepDirectoryName) + "/" + step.group + ".h5:/" + set.name + "/";
-            const std::string n = std::to_string(set.count);
-            x << "        <Grid Name=\"" << set.name << "\" GridType=\"Uniform\">\n"
-              << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
-              << "\" NodesPerElement=\"1\">\n"
-              << "            <DataItem Dimensions=\"" << n
-              << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << base << "connectivity</DataItem>\n"
-              << "          </Topology>\n"
-              << "          <Geometry GeometryType=\"XYZ\">\n"
-              << "            <DataItem Dimensions=\"" << n
-              << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << "positions</DataItem>\n"
-              << "          </Geometry>\n";
-            for (const AttributeRecord& a : set.attributes) {
-                const std::string dims = a.columns == 1 ? n : n + " " + std::to_string(a.columns);
-                x << "          <Attribute Name=\"" << a.name << "\" AttributeType=\"" << xdmfAttributeType(a.kind)
-                  << "\" Center=\"Node\">\n"
-                  << "            <DataItem Dimensions=\"" << dims
-                  << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << a.name << "</DataItem>\n"
-                  << "          </Attribute>\n";
-            }
-            x << "        </Grid>\n";
+    x << "      <Grid Name=\"" << step.group << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"
+      << "        <Time Value=\"" << formatDouble(step.time) << "\"/>\n";
+    for (const SetRecord& set : step.sets) {
+        if (set.count == 0) continue;  // zero-sized DataItems break the readers
+        const std::string base = std::string(kStepDirectoryName) + "/" + step.group + ".h5:/" + set.name + "/";
+        const std::string n = std::to_string(set.count);
+        x << "        <Grid Name=\"" << set.name << "\" GridType=\"Uniform\">\n"
+          << "          <Topology TopologyType=\"Polyvertex\" NumberOfElements=\"" << n
+          << "\" NodesPerElement=\"1\">\n"
+          << "            <DataItem Dimensions=\"" << n
+          << "\" NumberType=\"Int\" Precision=\"4\" Format=\"HDF\">" << base << "connectivity</DataItem>\n"
+          << "          </Topology>\n"
+          << "          <Geometry GeometryType=\"XYZ\">\n"
+          << "            <DataItem Dimensions=\"" << n
+          << " 3\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << "positions</DataItem>\n"
+          << "          </Geometry>\n";
+        for (const AttributeRecord& a : set.attributes) {
+            const std::string dims = a.columns == 1 ? n : n + " " + std::to_string(a.columns);
+            x << "          <Attribute Name=\"" << a.name << "\" AttributeType=\"" << xdmfAttributeType(a.kind)
+              << "\" Center=\"Node\">\n"
+              << "            <DataItem Dimensions=\"" << dims
+              << "\" NumberType=\"Float\" Precision=\"8\" Format=\"HDF\">" << base << a.name << "</DataItem>\n"
+              << "          </Attribute>\n";
         }
-        x << "      </Grid>\n";
+        x << "        </Grid>\n";
     }
-    x << "    </Grid>\n"
-      << "  </Domain>\n"
-      << "</Xdmf>\n";
+    x << "      </Grid>\n";
     return x.str();
 }
-void FieldWriter::Impl::writeXdmf() const {
+
+void FieldWriter::Impl::writeXdmf() {
+    // The steps already described are kept as text, and each output adds its own step's: an
+    // output costs the same however many came before it.
+    for (const std::size_t listed = steps.size() - (stepOpen ? 1 : 0); xdmfSteps < listed; ++xdmfSteps)
+        xdmfBody += xdmfStep(steps[xdmfSteps]);
     // Write beside, then rename: a reader (or a crash) never sees a half-written file.
     const std::string temporary = xdmfPath + ".tmp";
     {
         std::ofstream out(temporary, std::ios::trunc);
         if (!out) throw Error(temporary + ": cannot open for writing");
         errno = 0;
-        out << xdmfText();
+        out << kXdmfHead << xdmfBody << kXdmfTail;
         out.flush();
         if (!out) {
             const std::string reason = errno ? std::string(": ") + std::strerror(errno) : std::string();
@@ -269,7 +306,8 @@ void FieldWriter::Impl::writeXdmf() const {
             throw Error(temporary + ": cannot write" + reason + "; " + xdmfPath + " is left as it was");
         }
     }
-    publishFile(temporary, xdmfPath);
+    publishFile(temporary, xdmfPath, Durability::Deferred);
+    unsynced = true;
 }
 
 bool FieldWriter::Impl::readStep(const std::string& group, double keepBefore, StepRecord& step) const {
@@ -349,8 +387,7 @@ FieldWriter::FieldWriter(const std::string& directory, int dimension, double kee
     for (Impl::StepRecord step; s.readStep(stepGroupName(static_cast<int>(s.steps.size())), keepStepsBefore, step);)
         s.steps.push_back(std::move(step));
     // The new index first: a crash from here on finds fields.h5 naming only files that exist.
-    s.writeIndex();
-    s.writeXdmf();
+    s.list();
     for (const auto& entry : std::filesystem::directory_iterator(s.stepDirectory, error)) {
         const std::string name = entry.path().filename().string();
         bool kept = false;
@@ -361,6 +398,14 @@ FieldWriter::FieldWriter(const std::string& directory, int dimension, double kee
 
 FieldWriter::~FieldWriter() {
     if (!impl_) return;
+    // The steps ended and not yet listed are listed (an open step is not among them); a failure
+    // here leaves them as the last listing had them, each step still in its own file.
+    if (impl_->listingPending) {
+        try {
+            impl_->list();
+        } catch (...) {
+        }
+    }
     // A step still open here was left by an exception part way through it: abandon it rather
     // than publish half a step. The series stays as after the last endStep().
     impl_->stepGroup.close();
@@ -492,7 +537,8 @@ void FieldWriter::endStep() {
     const bool closed = s.stepFile.close();
     try {
         if (!closed) fail(s.stepTemporary, "close file");
-        publishFile(s.stepTemporary, s.stepPath(s.steps.back().group));
+        publishFile(s.stepTemporary, s.stepPath(s.steps.back().group), Durability::Deferred);
+        s.unsynced = true;
     } catch (...) {
         // The step is lost, the series before it is not: forget it and remove its remains.
         std::error_code ignored;
@@ -504,8 +550,21 @@ void FieldWriter::endStep() {
     }
     s.stepTemporary.clear();
     s.stepOpen = false;
-    s.writeIndex();
-    s.writeXdmf();
+    s.listingPending = true;
+    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - s.lastListing).count() >= s.listingInterval)
+        s.list();
+}
+
+void FieldWriter::setListingInterval(double seconds) { impl_->listingInterval = seconds; }
+
+void FieldWriter::makeDurable() {
+    Impl& s = *impl_;
+    if (s.listingPending) s.list();
+    if (!s.unsynced) return;
+    // One syncfs for the lot: an fsync per file commits the file system's journal once per file,
+    // which for a run's 200 outputs cost as much as the fsyncs it replaced.
+    syncFileSystem(std::filesystem::path(s.hdf5Path).parent_path().string());
+    s.unsynced = false;
 }
 
 }  // namespace qs

@@ -85,11 +85,25 @@ public:
     /// arrays may change after the call.
     void writePointSet(const std::string& setName, std::size_t count, const double* positions,
                        const std::vector<PointField>& fields);
-    /// Publishes the step's file, then fields.h5 and fields.xdmf (each by rename). If publishing
-    /// the step's file fails, the step is dropped and the files are as after the previous step;
-    /// if only the index or the XDMF fails, the step's file is in place but not yet listed (the
-    /// next endStep lists it). Pre: a step is open.
+    /// Publishes the step's file, then lists it in fields.h5 and fields.xdmf (each by rename),
+    /// or leaves the listing for later within the listing interval. If publishing the step's file
+    /// fails, the step is dropped and the files are as after the previous step; if only the index
+    /// or the XDMF fails, the step's file is in place but not yet listed (the next listing lists
+    /// it). Pre: a step is open.
     void endStep();
+
+    /// Lists new steps in fields.h5 and fields.xdmf at most once per `seconds` of wall time; 0,
+    /// the default, lists each step as it ends. makeDurable() and the destructor list what is
+    /// left. Each listing rewrites both files, and a run whose outputs come many to the second
+    /// (a 1D column) spent more on them than on the step files.
+    void setListingInterval(double seconds);
+
+    /// Lists the steps not yet listed, then forces every file published since the last call (the
+    /// step files, fields.h5, fields.xdmf) and their renames to disk. The files are published without it (a rename is atomic
+    /// against a crash of the program, not of the machine); the run calls it before each
+    /// checkpoint, so that after a power loss a checkpoint never outlives the outputs before it.
+    /// Throws qs::Error naming a file that cannot be flushed.
+    void makeDurable();
 
     const std::string& hdf5Path() const { return hdf5Path_; }
     const std::string& xdmfPath() const { return xdmfPath_; }

@@ -31,8 +31,25 @@ void syncToDisk(const std::string& path) {
     if (status != 0) throw Error(path + ": cannot flush to disk");
 }
 
-void publishFile(const std::string& temporary, const std::string& path) {
-    syncToDisk(temporary);
+void syncDirectory(const std::string& directory) {
+    const int fd = ::open(directory.empty() ? "." : directory.c_str(), O_RDONLY | O_DIRECTORY);
+    if (fd >= 0) {
+        ::fsync(fd);
+        ::close(fd);
+    }
+}
+
+void syncFileSystem(const std::string& directory) {
+    const std::string path = directory.empty() ? "." : directory;
+    const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY);
+    if (fd < 0) throw Error(path + ": cannot open to flush its files to disk");
+    const int status = ::syncfs(fd);
+    ::close(fd);
+    if (status != 0) throw Error(path + ": cannot flush its files to disk");
+}
+
+void publishFile(const std::string& temporary, const std::string& path, Durability durability) {
+    if (durability == Durability::Now) syncToDisk(temporary);
     std::error_code error;
     std::filesystem::rename(temporary, path, error);  // atomic on POSIX within one file system
     if (error) {
@@ -42,13 +59,7 @@ void publishFile(const std::string& temporary, const std::string& path) {
     }
     // The rename lives in the directory: sync it too, so that after a power loss a file that
     // names this one (fields.h5 names the step files) never survives while this rename is lost.
-    std::string directory = std::filesystem::path(path).parent_path().string();
-    if (directory.empty()) directory = ".";
-    const int fd = ::open(directory.c_str(), O_RDONLY | O_DIRECTORY);
-    if (fd >= 0) {
-        ::fsync(fd);  // best effort: some file systems refuse to sync a directory
-        ::close(fd);
-    }
+    if (durability == Durability::Now) syncDirectory(std::filesystem::path(path).parent_path().string());
 }
 
 }  // namespace qs

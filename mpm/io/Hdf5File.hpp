@@ -2,9 +2,13 @@
 // What every HDF5 writer and reader in io/ shares: a handle that closes what it owns, errors
 // that name the file and HDF5's own reason, and publishing a finished file by rename.
 //
-// Publishing: a file is written under a temporary name beside its final one, closed, forced to
-// disk, then renamed over the final name. A rename within one file system is atomic on POSIX,
-// so a reader, a crash or a full disk never finds a half-written file under the final name.
+// Publishing: a file is written under a temporary name beside its final one, closed, then
+// renamed over the final name. A rename within one file system is atomic on POSIX, so a reader,
+// a crash of the program or a full disk never finds a half-written file under the final name.
+// Against the machine stopping (a power loss), the file is forced to disk before the rename: at
+// once (the checkpoint), or for the field outputs in one go before the next checkpoint
+// (FieldWriter::makeDurable), since two fsyncs per file per output cost a 1D column run an
+// eighth of its wall time (docs/performance.md).
 #include <hdf5.h>
 
 #include <string>
@@ -57,8 +61,19 @@ std::string hdf5Reason();
 /// if the machine (not only the program) stops. Throws qs::Error naming the file.
 void syncToDisk(const std::string& path);
 
-/// Forces `temporary` to disk, renames it over `path` and syncs the directory. Throws qs::Error
-/// naming both (and removes `temporary`) if the rename fails.
-void publishFile(const std::string& temporary, const std::string& path);
+/// Forces the directory's entries (the renames in it) to disk; best effort, since some file
+/// systems refuse to sync a directory.
+void syncDirectory(const std::string& directory);
+
+/// Forces every file of the file system that holds `directory` to disk (Linux's syncfs): one
+/// journal commit for many files. Throws qs::Error naming the directory if it fails.
+void syncFileSystem(const std::string& directory);
+
+/// When a published file reaches the disk: before its rename, or when its writer next syncs.
+enum class Durability { Now, Deferred };
+
+/// Renames `temporary` over `path`; with Durability::Now forces it to disk first and syncs the
+/// directory after. Throws qs::Error naming both (and removes `temporary`) if the rename fails.
+void publishFile(const std::string& temporary, const std::string& path, Durability durability = Durability::Now);
 
 }  // namespace qs

@@ -284,6 +284,9 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     // a resumed run keeps the field steps written before its first new output
     if (options.writeFiles && config.output.fields)
         fields = std::make_unique<FieldWriter>(outDir.string(), D, options.resume ? nextOutput - halfStep : -1e300);
+    // fields.h5 and fields.xdmf list new outputs once a second: a 1D column writes its outputs
+    // many to the second, and each listing rewrites both files
+    if (fields) fields->setListingInterval(1.0);
     double nextCheckpoint = config.time.checkpointInterval > 0
                                 ? solver.time() + config.time.checkpointInterval
                                 : 1e300;
@@ -307,6 +310,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
     double lastCheckpoint = options.resume ? solver.time() : -1.0;
     auto checkpoint = [&]() {
         if (!options.writeFiles) return;
+        if (fields) fields->makeDurable();  // the outputs before the checkpoint that counts on them
         CheckpointData data;
         solver.saveState(data);
         advancer->save(data);

@@ -329,6 +329,54 @@ TEST_F(FieldWriterTest, EachStepIsAFileOfItsOwnPublishedByRename) {
     H5Fclose(file);
 }
 
+// With a listing interval (the run's: a second), fields.h5 and fields.xdmf list the steps ended
+// since the last listing when the interval has passed, at makeDurable() (each checkpoint) and
+// when the writer closes; each step's own file is published at once. The index is extended from
+// the last one published, and lists what a whole rewrite would.
+TEST_F(FieldWriterTest, AListingIntervalListsAtMakeDurableAndWhenTheWriterCloses) {
+    const std::vector<double> z = {0.1, 0.2};
+    auto linked = [&](int step) {
+        const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+        EXPECT_GE(file, 0);
+        const bool found = exists(file, "/step_00000" + std::to_string(step));
+        H5Fclose(file);
+        return found;
+    };
+    auto writeStep = [&](qs::FieldWriter& writer, int step) {
+        writer.beginStep(0.5 * step);
+        writer.writePointSet("solid", 2, z.data(), {{"porosity", z.data(), 1}});
+        writer.endStep();
+        EXPECT_TRUE(fs::exists(dir_ / "fields" / ("step_00000" + std::to_string(step) + ".h5")));
+    };
+    {
+        qs::FieldWriter writer(dir_.string(), 1);
+        writer.setListingInterval(1e9);
+        writeStep(writer, 0);
+        writeStep(writer, 1);
+        EXPECT_EQ(occurrences(readText(dir_ / "fields.xdmf"), "<Time "), 0);
+        EXPECT_FALSE(linked(0));
+        writer.makeDurable();
+        EXPECT_EQ(occurrences(readText(dir_ / "fields.xdmf"), "<Time "), 2);
+        EXPECT_TRUE(linked(0) && linked(1));
+        writeStep(writer, 2);
+        writeStep(writer, 3);
+        EXPECT_EQ(occurrences(readText(dir_ / "fields.xdmf"), "<Time "), 2);
+        EXPECT_FALSE(linked(2));
+        writer.setListingInterval(0);  // lists as each step ends
+        writeStep(writer, 4);
+        EXPECT_EQ(occurrences(readText(dir_ / "fields.xdmf"), "<Time "), 5);
+        EXPECT_TRUE(linked(2) && linked(3) && linked(4));
+        writer.setListingInterval(1e9);
+        writeStep(writer, 5);
+        EXPECT_FALSE(linked(5));
+    }
+    const std::string xdmf = readText(dir_ / "fields.xdmf");
+    EXPECT_EQ(occurrences(xdmf, "<Time "), 6);
+    EXPECT_EQ(occurrences(xdmf, "<Grid "), occurrences(xdmf, "</Grid>"));
+    for (int step = 0; step < 6; ++step) EXPECT_TRUE(linked(step)) << step;
+    EXPECT_EQ(filesIn(dir_), (std::vector<std::string>{"fields", "fields.h5", "fields.xdmf"}));
+}
+
 TEST_F(FieldWriterTest, AStepThatCannotBePublishedLeavesTheSeriesBeforeIt) {
     const std::vector<double> z = {0.1};
     qs::FieldWriter writer(dir_.string(), 1);
