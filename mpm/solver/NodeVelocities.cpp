@@ -1,5 +1,5 @@
-// Phase 4 of the double-point step: the nodal velocities with implicit drag, the boundary
-// conditions and the uniform gate (NodeVelocities.hpp).
+// Phase 4 of the double-point step: the uniform gate and the gate's flux (the node solve itself
+// is in NodeVelocities.hpp, for the two schemes to share it in one pass).
 #include "solver/NodeVelocities.hpp"
 
 #include <cmath>
@@ -7,8 +7,6 @@
 #include "core/ForAll.hpp"
 
 namespace qs {
-
-namespace {
 
 // The gate plane is where the tube's water enters the chamber, with water on both sides. Held
 // only by a uniform pressure, node by node, the chamber's water would sit on the gate like water
@@ -39,39 +37,6 @@ void uniformGateVelocity(const StepContext<D>& ctx, Real dt, Real resistance) {
         }
 }
 
-}  // namespace
-
-template <int D>
-Real solveNodes(const StepContext<D>& ctx, const StepInputs& in) {
-    NodeFields<D>& nodes = ctx.nodes;
-    const Real dt = in.dt;
-    forAll(ctx.grid.numNodes(), [&](Index i) {
-        const Real mS = nodes.massS[i], mL = nodes.massL[i];
-        Real w2 = 0;
-        for (int d = 0; d < D; ++d) {
-            const Index k = i * D + d;
-            const Real vS0 = mS > 0 ? nodes.momS[k] / mS : 0.0;
-            const Real vL0 = mL > 0 ? nodes.momL[k] / mL : 0.0;
-            Real fS = nodes.forceS[k], fL = nodes.forceL[k];
-            if (in.damping) {
-                // local damping, gravity stage only: F <- F - alpha |F| sign(v)
-                fS -= in.dampingAlpha * std::abs(fS) * (vS0 > 0 ? 1 : (vS0 < 0 ? -1 : 0));
-                fL -= in.dampingAlpha * std::abs(fL) * (vL0 > 0 ? 1 : (vL0 < 0 ? -1 : 0));
-            }
-            const Real vS1 = mS > 0 ? vS0 + dt * fS / mS : 0.0;  // drag-free predictors
-            const Real vL1 = mL > 0 ? vL0 + dt * fL / mL : 0.0;
-            const PhaseVelocities v = solveComponent(nodeComponent(ctx, in, i, d), dt, vS1, vL1);
-            nodes.velS[k] = v.solid;
-            nodes.velL[k] = v.liquid;
-            nodes.velLIncrement[k] = v.liquid - vL0;  // what the FLIP update hands the liquid points
-            w2 += (v.liquid - v.solid) * (v.liquid - v.solid);
-        }
-        nodes.relSpeed[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
-    });
-    if (in.gate.uniform) uniformGateVelocity(ctx, dt, in.gate.resistance);
-    return gateFlux(ctx);
-}
-
 template <int D>
 Real gateFlux(const StepContext<D>& ctx) {
     Real Qg = 0;
@@ -81,7 +46,7 @@ Real gateFlux(const StepContext<D>& ctx) {
 }
 
 #define QS_INSTANTIATE(D)                                                          \
-    template Real solveNodes<D>(const StepContext<D>&, const StepInputs&);         \
+    template void uniformGateVelocity<D>(const StepContext<D>&, Real, Real);         \
     template Real gateFlux<D>(const StepContext<D>&);
 QS_INSTANTIATE(1)
 QS_INSTANTIATE(2)

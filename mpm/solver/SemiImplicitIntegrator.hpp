@@ -47,7 +47,6 @@ public:
     const Eigen::VectorXd& pressureIncrement() const { return dp_; }
 
 private:
-    void nodeResponse(const StepInputs& in);
     void gateResponse(const StepInputs& in);
     void assemble(Real dt);
     static constexpr int kStencil = D == 1 ? 3 : D == 2 ? 9 : 27;  ///< a cell's neighbours and itself
@@ -63,7 +62,10 @@ private:
     PressureSystem system_;
     std::vector<Real> predS_, predL_;  ///< [D] m/s, the predictor's velocities
     std::vector<Real> incL_;           ///< [D] m/s, the predictor's FLIP increment
-    std::vector<Real> rS_, rL_;        ///< [D] s/kg, the response to a pressure force
+    /// [D] s/kg, each component's response to a unit impulse on the mixture, shared as (1 - n)
+    /// on the solid and n on the liquid: the node solve with those as its drag-free predictors
+    /// and nothing prescribed (solveComponent is linear in them)
+    std::vector<Real> rS_, rL_;
     std::vector<Real> force_;          ///< [D] N, D^T dp: the increment's force on the mixture
     std::vector<Real> gateWeight_;     ///< per gate node, M_L r_L: its share of the uniform gate's impulse
     std::vector<char> held_;           ///< per cell: its increment is known (no water, or at its bound)

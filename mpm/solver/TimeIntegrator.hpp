@@ -63,7 +63,7 @@ struct IntegratorStats {
     long solves = 0;          ///< linear solves (active-set passes), over all steps
     long cappedSteps = 0;     ///< steps whose active set had not settled after the last pass
     long iterations = 0;      ///< CG iterations over all solves (0 with the direct solver)
-    double seconds = 0;       ///< s of wall time in the response, assembly, solve and correction
+    double seconds = 0;       ///< s of wall time in the assembly, solve and correction (sampled: SemiImplicitIntegrator)
     const char* solver = "";  ///< the linear solver, for the summary
 };
 
