@@ -243,8 +243,7 @@ const char* const kXdmfTail =
     "</Xdmf>\n";
 }  // namespace
 
-// One step's entry in fields.xdmf: a spatial collection of its point sets.
-// fields.h5 and fields.xdmf anew with every step ended
+// fields.h5 and fields.xdmf anew, with every step ended
 void FieldWriter::Impl::list() {
     listingPending = true;  // until both are published
     writeIndex();
@@ -253,6 +252,7 @@ void FieldWriter::Impl::list() {
     listingPending = false;
 }
 
+// One step's entry in fields.xdmf: a spatial collection of its point sets.
 std::string FieldWriter::Impl::xdmfStep(const StepRecord& step) {
     std::ostringstream x;
     x << "      <Grid Name=\"" << step.group << "\" GridType=\"Collection\" CollectionType=\"Spatial\">\n"

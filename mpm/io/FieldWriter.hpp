@@ -3,9 +3,11 @@
 // it so that ParaView (or VisIt) opens the whole series as one time-dependent data set.
 //
 // Never half-written: each output step is a file of its own, OUTDIR/fields/step_NNNNNN.h5,
-// written under a temporary name, forced to disk and renamed into place. fields.h5 itself holds
-// only external links, /step_NNNNNN -> fields/step_NNNNNN.h5:/, and is replaced (by rename) after
-// each step, as is fields.xdmf. A crash or a full disk mid-step loses that step only.
+// written under a temporary name and renamed into place. fields.h5 itself holds only external
+// links, /step_NNNNNN -> fields/step_NNNNNN.h5:/, and is replaced (by rename) when it lists new
+// steps, as is fields.xdmf: after each step, or at most once per listing interval. A crash or a
+// full disk mid-step loses that step only. The files reach the disk (against a power loss) at
+// makeDurable(), which the run calls before each checkpoint.
 //
 // Usage:
 //   FieldWriter writer(outputDirectory, D);          // a new series: both files, no steps
@@ -14,7 +16,7 @@
 //     writer.writePointSet("solid", n, positions, {{"porosity", phi, 1},
 //                                                  {"effective_stress", sigma, 6}});
 //     writer.writePointSet("liquid", m, ...);
-//     writer.endStep();                              // flushes; fields.xdmf is valid again
+//     writer.endStep();                              // the step's file; fields.xdmf lists it
 //
 // Layout of fields.h5 as a reader sees it through the links (all datasets double, row-major,
 // one row per point):
