@@ -144,7 +144,8 @@ struct FieldWriter::Impl {
                       const void* data, hid_t memoryType, hid_t fileType, std::size_t rows, int columns,
                       const char* components);
     void writeIndex();
-    void list();
+    void publishIndex(bool extend, std::size_t listed);
+    void publishListing();
     void writeXdmf();
     static std::string xdmfStep(const StepRecord& step);
     bool readStep(const std::string& group, double keepBefore, StepRecord& step) const;
@@ -199,16 +200,29 @@ void FieldWriter::Impl::writeDataset(hid_t group, const std::string& groupPath, 
 void FieldWriter::Impl::writeIndex() {
     // fields.h5 holds no data, only a link per step to its file: readers (h5py, ParaView, the
     // HDF5 C API) see one file with groups /step_NNNNNN, and HDF5 finds each linked file relative
-    // to fields.h5's own directory. It is replaced only by rename: the last one published is
-    // copied and the new steps' links added to the copy, so an output costs the same however
-    // many came before it (rewriting it whole made a long series' outputs O(n^2)).
-    const std::string temporary = hdf5Path + ".tmp";
+    // to fields.h5's own directory. It is replaced only by rename. The last one published is
+    // copied and the new steps' links added to the copy (creating every link anew each output
+    // was most of a 1D run's output time); if that fails, it is written whole.
     const std::size_t listed = steps.size() - (stepOpen ? 1 : 0);
+    if (indexedSteps > 0 && indexedSteps <= listed) {
+        try {
+            publishIndex(true, listed);
+            return;
+        } catch (const Error&) {
+            // a fields.h5 changed or damaged since: write it whole
+        }
+    }
+    publishIndex(false, listed);
+}
+
+void FieldWriter::Impl::publishIndex(bool extend, std::size_t listed) {
+    const std::string temporary = hdf5Path + ".tmp";
     try {
-        std::error_code copied;
-        const bool extend = indexedSteps > 0 && indexedSteps <= listed &&
-                            std::filesystem::copy_file(hdf5Path, temporary,
-                                                       std::filesystem::copy_options::overwrite_existing, copied);
+        if (extend) {
+            std::error_code error;
+            std::filesystem::copy_file(hdf5Path, temporary, std::filesystem::copy_options::overwrite_existing, error);
+            if (error) throw Error(hdf5Path + ": cannot copy to " + temporary + ": " + error.message());
+        }
         Hdf5Handle file(extend ? H5Fopen(temporary.c_str(), H5F_ACC_RDWR, H5P_DEFAULT)
                                : H5Fcreate(temporary.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT),
                         H5Fclose);
@@ -243,8 +257,8 @@ const char* const kXdmfTail =
     "</Xdmf>\n";
 }  // namespace
 
-// fields.h5 and fields.xdmf anew, with every step ended
-void FieldWriter::Impl::list() {
+// fields.h5 and fields.xdmf listing every step ended
+void FieldWriter::Impl::publishListing() {
     listingPending = true;  // until both are published
     writeIndex();
     writeXdmf();
@@ -286,8 +300,8 @@ std::string FieldWriter::Impl::xdmfStep(const StepRecord& step) {
 }
 
 void FieldWriter::Impl::writeXdmf() {
-    // The steps already described are kept as text, and each output adds its own step's: an
-    // output costs the same however many came before it.
+    // The steps already described are kept as text, and each listing formats only its new steps'
+    // (the bytes written still grow with the series).
     for (const std::size_t listed = steps.size() - (stepOpen ? 1 : 0); xdmfSteps < listed; ++xdmfSteps)
         xdmfBody += xdmfStep(steps[xdmfSteps]);
     // Write beside, then rename: a reader (or a crash) never sees a half-written file.
@@ -387,7 +401,7 @@ FieldWriter::FieldWriter(const std::string& directory, int dimension, double kee
     for (Impl::StepRecord step; s.readStep(stepGroupName(static_cast<int>(s.steps.size())), keepStepsBefore, step);)
         s.steps.push_back(std::move(step));
     // The new index first: a crash from here on finds fields.h5 naming only files that exist.
-    s.list();
+    s.publishListing();
     for (const auto& entry : std::filesystem::directory_iterator(s.stepDirectory, error)) {
         const std::string name = entry.path().filename().string();
         bool kept = false;
@@ -402,8 +416,10 @@ FieldWriter::~FieldWriter() {
     // here leaves them as the last listing had them, each step still in its own file.
     if (impl_->listingPending) {
         try {
-            impl_->list();
-        } catch (...) {
+            impl_->publishListing();
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "quicksand: warning: the last outputs are in %s but not listed in %s: %s\n",
+                         impl_->stepDirectory.string().c_str(), hdf5Path_.c_str(), e.what());
         }
     }
     // A step still open here was left by an exception part way through it: abandon it rather
@@ -551,15 +567,21 @@ void FieldWriter::endStep() {
     s.stepTemporary.clear();
     s.stepOpen = false;
     s.listingPending = true;
+    listIfDue();
+}
+
+void FieldWriter::listIfDue() {
+    Impl& s = *impl_;
+    if (!s.listingPending) return;
     if (std::chrono::duration<double>(std::chrono::steady_clock::now() - s.lastListing).count() >= s.listingInterval)
-        s.list();
+        s.publishListing();
 }
 
 void FieldWriter::setListingInterval(double seconds) { impl_->listingInterval = seconds; }
 
 void FieldWriter::makeDurable() {
     Impl& s = *impl_;
-    if (s.listingPending) s.list();
+    if (s.listingPending) s.publishListing();
     if (!s.unsynced) return;
     // One syncfs for the lot: an fsync per file commits the file system's journal once per file,
     // which for a run's 200 outputs cost as much as the fsyncs it replaced.

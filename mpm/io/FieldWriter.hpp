@@ -16,7 +16,7 @@
 //     writer.writePointSet("solid", n, positions, {{"porosity", phi, 1},
 //                                                  {"effective_stress", sigma, 6}});
 //     writer.writePointSet("liquid", m, ...);
-//     writer.endStep();                              // the step's file; fields.xdmf lists it
+//     writer.endStep();                              // the step's file, listed in fields.xdmf
 //
 // Layout of fields.h5 as a reader sees it through the links (all datasets double, row-major,
 // one row per point):
@@ -95,16 +95,21 @@ public:
     void endStep();
 
     /// Lists new steps in fields.h5 and fields.xdmf at most once per `seconds` of wall time; 0,
-    /// the default, lists each step as it ends. makeDurable() and the destructor list what is
-    /// left. Each listing rewrites both files, and a run whose outputs come many to the second
-    /// (a 1D column) spent more on them than on the step files.
+    /// the default, lists each step as it ends. Each listing replaces both files, and a run whose
+    /// outputs come many to the second (a 1D column) spent more on them than on the step files.
     void setListingInterval(double seconds);
+    /// Lists the steps ended and not yet listed if the interval has passed since the last
+    /// listing; cheap when none waits. The run calls it every step, so that a step is listed
+    /// within the interval, whenever the next output comes; makeDurable() and the destructor
+    /// list what is left.
+    void listIfDue();
 
-    /// Lists the steps not yet listed, then forces every file published since the last call (the
-    /// step files, fields.h5, fields.xdmf) and their renames to disk. The files are published without it (a rename is atomic
-    /// against a crash of the program, not of the machine); the run calls it before each
-    /// checkpoint, so that after a power loss a checkpoint never outlives the outputs before it.
-    /// Throws qs::Error naming a file that cannot be flushed.
+    /// Lists the steps not yet listed, then forces every file published since the last call
+    /// (the step files, fields.h5, fields.xdmf) and their renames to disk, by one syncfs of their
+    /// file system. Without it a published file is whole against a crash of the program, not of
+    /// the machine; the run calls it before each checkpoint, so that after a power loss a
+    /// checkpoint never outlives the outputs before it. Throws qs::Error naming the output
+    /// directory and the system's reason if the flush fails.
     void makeDurable();
 
     const std::string& hdf5Path() const { return hdf5Path_; }

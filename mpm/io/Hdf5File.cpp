@@ -3,6 +3,8 @@
 #include "core/Error.hpp"
 
 #include <fcntl.h>
+#include <cerrno>
+#include <cstring>
 #include <unistd.h>
 
 #include <filesystem>
@@ -44,8 +46,9 @@ void syncFileSystem(const std::string& directory) {
     const int fd = ::open(path.c_str(), O_RDONLY | O_DIRECTORY);
     if (fd < 0) throw Error(path + ": cannot open to flush its files to disk");
     const int status = ::syncfs(fd);
+    const int reason = errno;
     ::close(fd);
-    if (status != 0) throw Error(path + ": cannot flush its files to disk");
+    if (status != 0) throw Error(path + ": cannot flush its files to disk: " + std::strerror(reason));
 }
 
 void publishFile(const std::string& temporary, const std::string& path, Durability durability) {
@@ -57,8 +60,8 @@ void publishFile(const std::string& temporary, const std::string& path, Durabili
         std::filesystem::remove(temporary, ignored);
         throw Error(path + ": cannot replace with " + temporary + ": " + error.message());
     }
-    // The rename lives in the directory: sync it too, so that after a power loss a file that
-    // names this one (fields.h5 names the step files) never survives while this rename is lost.
+    // The rename lives in the directory: sync it too, so that after a power loss the file is
+    // found under its name (a checkpoint that says it was written is there to resume from).
     if (durability == Durability::Now) syncDirectory(std::filesystem::path(path).parent_path().string());
 }
 

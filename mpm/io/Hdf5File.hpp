@@ -5,10 +5,11 @@
 // Publishing: a file is written under a temporary name beside its final one, closed, then
 // renamed over the final name. A rename within one file system is atomic on POSIX, so a reader,
 // a crash of the program or a full disk never finds a half-written file under the final name.
-// Against the machine stopping (a power loss), the file is forced to disk before the rename: at
-// once (the checkpoint), or for the field outputs in one go before the next checkpoint
-// (FieldWriter::makeDurable), since two fsyncs per file per output cost a 1D column run an
-// eighth of its wall time (docs/performance.md).
+// Against the machine stopping (a power loss) a file must also reach the disk before its rename
+// does. The checkpoint is forced to disk before its rename (Durability::Now); the field outputs
+// are renamed at once and forced to disk together before the next checkpoint
+// (FieldWriter::makeDurable, Durability::Deferred): two fsyncs per file per output cost a 1D
+// column run an eighth of its wall time (docs/reliability.md).
 #include <hdf5.h>
 
 #include <string>
@@ -66,7 +67,9 @@ void syncToDisk(const std::string& path);
 void syncDirectory(const std::string& directory);
 
 /// Forces every file of the file system that holds `directory` to disk (Linux's syncfs): one
-/// journal commit for many files. Throws qs::Error naming the directory if it fails.
+/// journal commit for many files. Throws qs::Error naming the directory and the system's reason
+/// if it fails (Linux reports write-back errors through it from 5.8 on). It flushes what other
+/// programs wrote to that file system too.
 void syncFileSystem(const std::string& directory);
 
 /// When a published file reaches the disk: before its rename, or when its writer next syncs.

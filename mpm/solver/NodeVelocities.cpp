@@ -4,8 +4,6 @@
 
 #include <cmath>
 
-#include "core/ForAll.hpp"
-
 namespace qs {
 
 // The gate plane is where the tube's water enters the chamber, with water on both sides. Held

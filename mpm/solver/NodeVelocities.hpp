@@ -26,7 +26,7 @@ struct PhaseVelocities { Real solid = 0, liquid = 0; };
 
 /// The component's end-of-step velocities from the drag-free predictors vS1, vL1 (ignored for a
 /// phase without mass). Linear in (vS1, vL1, heldLiquidVelocity): the semi-implicit scheme takes
-/// its response to a pressure force from it (SemiImplicitIntegrator.cpp).
+/// its response to a pressure force from it (componentResponse, below).
 inline PhaseVelocities solveComponent(const NodeComponent& n, Real dt, Real vS1, Real vL1) {
     const Real mS = n.massS, mL = n.massL, Q = n.drag;
     Real vS = 0, vL = 0;
@@ -61,7 +61,8 @@ inline PhaseVelocities solveComponent(const NodeComponent& n, Real dt, Real vS1,
 /// and n on the liquid, nothing prescribed: solveComponent with vS1 = (1 - n) / M_S,
 /// vL1 = n / M_L and no held velocity (the semi-implicit step's response to a pressure force).
 /// Where both phases move, its closed form in two divisions instead of solveComponent's eight:
-/// the relaxed slip w = v_L - v_S with numerator and denominator times M_S M_L.
+/// the relaxed slip w = v_L - v_S with numerator and denominator times M_S M_L. There, as in
+/// solveComponent, the tube's loss plays no part: a gate node's solid is held.
 inline PhaseVelocities componentResponse(NodeComponent c, Real dt, Real porosity) {
     c.heldLiquidVelocity = 0;
     const Real mS = c.massS, mL = c.massL;
@@ -143,6 +144,5 @@ template <int D>
 Real solveNodes(const StepContext<D>& ctx, const StepInputs& in) {
     return solveNodes(ctx, in, [](Index, int, const NodeComponent&) {});
 }
-
 
 }  // namespace qs

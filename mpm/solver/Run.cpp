@@ -376,6 +376,7 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
             checkpoint();
             nextCheckpoint += config.time.checkpointInterval;
         }
+        if (fields) fields->listIfDue();
         const auto now = Clock::now();
         if (!options.quiet &&
             std::chrono::duration<double>(now - lastProgress).count() >= config.output.progressInterval) {

@@ -6,8 +6,8 @@
 //    the pore pressure p^n among them: v*_S, v*_L and the mixture's flux Phi* = (1-n) v*_S + n v*_L.
 //  2 Each node component's response to a pressure force: a force G on the mixture, shared as
 //    (1-n) G on the solid and n G on the liquid, moves the velocities by dt r_S G and dt r_L G,
-//    (r_S, r_L) from the same node solve (solveComponent is linear), and the flux by
-//    dt beta G, beta = (1-n) r_S + n r_L: the drag, the masks and the tube's loss are in it.
+//    (r_S, r_L) from the same node solve (componentResponse, in the predictor's pass), and the
+//    flux by dt beta G, beta = (1-n) r_S + n r_L: the drag, the masks and the tube's loss are in it.
 //  3 The pressure increment dp of the cells that keeps each cell's water balance with the
 //    velocities it makes, S_c dp_c + dt (D Phi)_c = 0, S_c = V_c n_c / K_L:
 //      (S + dt^2 D B D^T) dp = -dt D Phi*,

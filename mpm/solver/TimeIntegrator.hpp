@@ -63,7 +63,9 @@ struct IntegratorStats {
     long solves = 0;          ///< linear solves (active-set passes), over all steps
     long cappedSteps = 0;     ///< steps whose active set had not settled after the last pass
     long iterations = 0;      ///< CG iterations over all solves (0 with the direct solver)
-    double seconds = 0;       ///< s of wall time in the assembly, solve and correction (sampled: SemiImplicitIntegrator)
+    /// s of wall time in the assembly, solve and correction (an estimate from sampled steps:
+    /// SemiImplicitIntegrator)
+    double seconds = 0;
     const char* solver = "";  ///< the linear solver, for the summary
 };
 
@@ -75,7 +77,8 @@ public:
     /// Pre: the nodes' masses, momenta, drag, porosities and forces of this step, the cells' water
     /// at the step's start. Post: nodes.velS, velL, velLIncrement and relSpeed at the step's end.
     /// Returns the gate flux, m3/s into the column. Throws qs::Error if the scheme cannot advance
-    /// (a pressure solve that fails), naming the time and the cell.
+    /// (a pressure solve that fails), naming the time and the cell; the nodes' velocities are then
+    /// not the step's, and the run stops.
     virtual Real solveVelocities(const StepInputs& in, Real time) = 0;
     virtual IntegratorStats stats() const { return {}; }
     /// What the scheme carries from one step to the next (the semi-implicit step's starting

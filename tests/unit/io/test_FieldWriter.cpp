@@ -9,10 +9,12 @@
 #include <unistd.h>
 
 #include <algorithm>
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <thread>
 #include <vector>
 
 namespace fs = std::filesystem;
@@ -375,6 +377,93 @@ TEST_F(FieldWriterTest, AListingIntervalListsAtMakeDurableAndWhenTheWriterCloses
     EXPECT_EQ(occurrences(xdmf, "<Grid "), occurrences(xdmf, "</Grid>"));
     for (int step = 0; step < 6; ++step) EXPECT_TRUE(linked(step)) << step;
     EXPECT_EQ(filesIn(dir_), (std::vector<std::string>{"fields", "fields.h5", "fields.xdmf"}));
+}
+
+/// fields.h5's links, name -> "file:object", in creation order (the order readers list them)
+std::vector<std::string> indexLinks(const fs::path& index) {
+    std::vector<std::string> links;
+    const hid_t file = H5Fopen(index.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    EXPECT_GE(file, 0);
+    if (file < 0) return links;
+    H5G_info_t info;
+    H5Gget_info(file, &info);
+    for (hsize_t k = 0; k < info.nlinks; ++k) {
+        char name[64] = {}, value[256] = {};
+        H5Lget_name_by_idx(file, ".", H5_INDEX_NAME, H5_ITER_INC, k, name, sizeof name, H5P_DEFAULT);
+        H5Lget_val(file, name, value, sizeof value, H5P_DEFAULT);
+        const char* target = nullptr;
+        const char* object = nullptr;
+        H5Lunpack_elink_val(value, sizeof value, nullptr, &target, &object);
+        links.push_back(std::string(name) + " -> " + (target ? target : "?") + ":" + (object ? object : "?"));
+    }
+    H5Fclose(file);
+    return links;
+}
+
+// The index extended step by step links what one written whole links: the same names, files and
+// objects, and its dimension
+TEST_F(FieldWriterTest, TheExtendedIndexLinksWhatAWholeOneLinks) {
+    const std::vector<double> z = {0.1, 0.2};
+    {
+        qs::FieldWriter writer(dir_.string(), 2);
+        for (int step = 0; step < 12; ++step) {  // past HDF5's compact link storage (8)
+            writer.beginStep(0.5 * step);
+            writer.writePointSet("solid", 1, z.data(), {});
+            writer.endStep();
+        }
+    }
+    const std::vector<std::string> extended = indexLinks(dir_ / "fields.h5");
+    ASSERT_EQ(extended.size(), 12u);
+    EXPECT_EQ(extended[11], "step_000011 -> fields/step_000011.h5:/");
+    // a resumed writer keeping every step writes the index whole
+    { qs::FieldWriter resumed(dir_.string(), 2, 1e9); }
+    EXPECT_EQ(indexLinks(dir_ / "fields.h5"), extended);
+    const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    ASSERT_GE(file, 0);
+    int dimension = 0;
+    const hid_t attribute = H5Aopen(file, "dimension", H5P_DEFAULT);
+    H5Aread(attribute, H5T_NATIVE_INT, &dimension);
+    H5Aclose(attribute);
+    H5Fclose(file);
+    EXPECT_EQ(dimension, 2);
+}
+
+// A listing that fails leaves the step in its file; the next listing lists it, the index written
+// whole when the copy cannot be extended
+TEST_F(FieldWriterTest, AListingThatFailsIsMadeGoodByTheNext) {
+    const std::vector<double> z = {0.1};
+    qs::FieldWriter writer(dir_.string(), 1);
+    writer.beginStep(0.0);
+    writer.writePointSet("solid", 1, z.data(), {});
+    writer.endStep();
+    // fields.h5.tmp blocked by a directory with a file in it: neither the copy nor a new file
+    fs::create_directories(dir_ / "fields.h5.tmp" / "blocker");
+    writer.beginStep(0.5);
+    writer.writePointSet("solid", 1, z.data(), {});
+    EXPECT_THROW(writer.endStep(), qs::Error);
+    EXPECT_TRUE(fs::exists(dir_ / "fields" / "step_000001.h5"));
+    EXPECT_EQ(indexLinks(dir_ / "fields.h5").size(), 1u);
+    fs::remove_all(dir_ / "fields.h5.tmp");
+    writer.beginStep(1.0);
+    writer.writePointSet("solid", 1, z.data(), {});
+    writer.endStep();
+    EXPECT_EQ(indexLinks(dir_ / "fields.h5").size(), 3u);
+    EXPECT_EQ(occurrences(readText(dir_ / "fields.xdmf"), "<Time "), 3);
+}
+
+// listIfDue lists a waiting step once the interval has passed, with no output after it
+TEST_F(FieldWriterTest, AWaitingStepIsListedOnceTheIntervalHasPassed) {
+    const std::vector<double> z = {0.1};
+    qs::FieldWriter writer(dir_.string(), 1);
+    writer.setListingInterval(0.5);
+    writer.beginStep(0.0);
+    writer.writePointSet("solid", 1, z.data(), {});
+    writer.endStep();  // within 0.5 s of the constructor's listing: waits
+    writer.listIfDue();
+    EXPECT_EQ(occurrences(readText(dir_ / "fields.xdmf"), "<Time "), 0);
+    std::this_thread::sleep_for(std::chrono::milliseconds(600));
+    writer.listIfDue();
+    EXPECT_EQ(occurrences(readText(dir_ / "fields.xdmf"), "<Time "), 1);
 }
 
 TEST_F(FieldWriterTest, AStepThatCannotBePublishedLeavesTheSeriesBeforeIt) {
