@@ -570,10 +570,9 @@ void FieldWriter::endStep() {
     listIfDue();
 }
 
-void FieldWriter::listIfDue() {
+void FieldWriter::listIfDue(std::chrono::steady_clock::time_point now) {
     Impl& s = *impl_;
-    if (!s.listingPending) return;
-    if (std::chrono::duration<double>(std::chrono::steady_clock::now() - s.lastListing).count() >= s.listingInterval)
+    if (s.listingPending && std::chrono::duration<double>(now - s.lastListing).count() >= s.listingInterval)
         s.publishListing();
 }
 

@@ -41,6 +41,7 @@
 //
 // Errors: any HDF5 or file failure throws qs::Error naming the file and the operation.
 // Not thread-safe; call from one thread (HDF5 serial is not thread-safe either).
+#include <chrono>
 #include <cstddef>
 #include <cstdint>
 #include <memory>
@@ -101,8 +102,8 @@ public:
     /// Lists the steps ended and not yet listed if the interval has passed since the last
     /// listing; cheap when none waits. The run calls it every step, so that a step is listed
     /// within the interval, whenever the next output comes; makeDurable() and the destructor
-    /// list what is left.
-    void listIfDue();
+    /// list what is left. `now`: the caller's reading of the clock, which it has at hand.
+    void listIfDue(std::chrono::steady_clock::time_point now = std::chrono::steady_clock::now());
 
     /// Lists the steps not yet listed, then forces every file published since the last call
     /// (the step files, fields.h5, fields.xdmf) and their renames to disk, by one syncfs of their

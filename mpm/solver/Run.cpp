@@ -376,8 +376,8 @@ RunSummary runColumn(const CaseConfig& config, const RunOptions& options) {
             checkpoint();
             nextCheckpoint += config.time.checkpointInterval;
         }
-        if (fields) fields->listIfDue();
         const auto now = Clock::now();
+        if (fields) fields->listIfDue(now);
         if (!options.quiet &&
             std::chrono::duration<double>(now - lastProgress).count() >= config.output.progressInterval) {
             lastProgress = now;
