@@ -331,12 +331,19 @@ TEST_F(FieldWriterTest, EachStepIsAFileOfItsOwnPublishedByRename) {
     H5Fclose(file);
 }
 
+/// One output of one solid point at time t (s): what the listing tests write
+void writeOneStep(qs::FieldWriter& writer, double t) {
+    const std::vector<double> z = {0.1};
+    writer.beginStep(t);
+    writer.writePointSet("solid", 1, z.data(), {{"porosity", z.data(), 1}});
+    writer.endStep();
+}
+
 // With a listing interval (the run's: a second), fields.h5 and fields.xdmf list the steps ended
 // since the last listing when the interval has passed, at makeDurable() (each checkpoint) and
 // when the writer closes; each step's own file is published at once. The index is extended from
 // the last one published, and lists what a whole rewrite would.
 TEST_F(FieldWriterTest, AListingIntervalListsAtMakeDurableAndWhenTheWriterCloses) {
-    const std::vector<double> z = {0.1, 0.2};
     auto linked = [&](int step) {
         const hid_t file = H5Fopen((dir_ / "fields.h5").c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
         EXPECT_GE(file, 0);
@@ -345,9 +352,7 @@ TEST_F(FieldWriterTest, AListingIntervalListsAtMakeDurableAndWhenTheWriterCloses
         return found;
     };
     auto writeStep = [&](qs::FieldWriter& writer, int step) {
-        writer.beginStep(0.5 * step);
-        writer.writePointSet("solid", 2, z.data(), {{"porosity", z.data(), 1}});
-        writer.endStep();
+        writeOneStep(writer, 0.5 * step);
         EXPECT_TRUE(fs::exists(dir_ / "fields" / ("step_00000" + std::to_string(step) + ".h5")));
     };
     {
@@ -403,14 +408,9 @@ std::vector<std::string> indexLinks(const fs::path& index) {
 // The index extended step by step links what one written whole links: the same names, files and
 // objects, and its dimension
 TEST_F(FieldWriterTest, TheExtendedIndexLinksWhatAWholeOneLinks) {
-    const std::vector<double> z = {0.1, 0.2};
     {
         qs::FieldWriter writer(dir_.string(), 2);
-        for (int step = 0; step < 12; ++step) {  // past HDF5's compact link storage (8)
-            writer.beginStep(0.5 * step);
-            writer.writePointSet("solid", 1, z.data(), {});
-            writer.endStep();
-        }
+        for (int step = 0; step < 12; ++step) writeOneStep(writer, 0.5 * step);  // past HDF5's compact links (8)
     }
     const std::vector<std::string> extended = indexLinks(dir_ / "fields.h5");
     ASSERT_EQ(extended.size(), 12u);
@@ -431,34 +431,24 @@ TEST_F(FieldWriterTest, TheExtendedIndexLinksWhatAWholeOneLinks) {
 // A listing that fails leaves the step in its file; the next listing lists it, the index written
 // whole when the copy cannot be extended
 TEST_F(FieldWriterTest, AListingThatFailsIsMadeGoodByTheNext) {
-    const std::vector<double> z = {0.1};
     qs::FieldWriter writer(dir_.string(), 1);
-    writer.beginStep(0.0);
-    writer.writePointSet("solid", 1, z.data(), {});
-    writer.endStep();
+    writeOneStep(writer, 0.0);
     // fields.h5.tmp blocked by a directory with a file in it: neither the copy nor a new file
     fs::create_directories(dir_ / "fields.h5.tmp" / "blocker");
-    writer.beginStep(0.5);
-    writer.writePointSet("solid", 1, z.data(), {});
-    EXPECT_THROW(writer.endStep(), qs::Error);
+    EXPECT_THROW(writeOneStep(writer, 0.5), qs::Error);
     EXPECT_TRUE(fs::exists(dir_ / "fields" / "step_000001.h5"));
     EXPECT_EQ(indexLinks(dir_ / "fields.h5").size(), 1u);
     fs::remove_all(dir_ / "fields.h5.tmp");
-    writer.beginStep(1.0);
-    writer.writePointSet("solid", 1, z.data(), {});
-    writer.endStep();
+    writeOneStep(writer, 1.0);
     EXPECT_EQ(indexLinks(dir_ / "fields.h5").size(), 3u);
     EXPECT_EQ(occurrences(readText(dir_ / "fields.xdmf"), "<Time "), 3);
 }
 
 // listIfDue lists a waiting step once the interval has passed, with no output after it
 TEST_F(FieldWriterTest, AWaitingStepIsListedOnceTheIntervalHasPassed) {
-    const std::vector<double> z = {0.1};
     qs::FieldWriter writer(dir_.string(), 1);
     writer.setListingInterval(0.5);
-    writer.beginStep(0.0);
-    writer.writePointSet("solid", 1, z.data(), {});
-    writer.endStep();  // within 0.5 s of the constructor's listing: waits
+    writeOneStep(writer, 0.0);  // within 0.5 s of the constructor's listing: waits
     writer.listIfDue();
     EXPECT_EQ(occurrences(readText(dir_ / "fields.xdmf"), "<Time "), 0);
     std::this_thread::sleep_for(std::chrono::milliseconds(600));
