@@ -331,11 +331,13 @@ TEST_F(FieldWriterTest, EachStepIsAFileOfItsOwnPublishedByRename) {
     H5Fclose(file);
 }
 
-/// One output of one solid point at time t (s): what the listing tests write
-void writeOneStep(qs::FieldWriter& writer, double t) {
-    const std::vector<double> z = {0.1};
+/// One output of one solid point at time t (s) in a writer of `dimension`: what the listing
+/// tests write (the point has as many coordinates as the writer's dimension)
+void writeOneStep(qs::FieldWriter& writer, double t, int dimension = 1) {
+    const std::vector<double> position(dimension, 0.1);
+    const std::vector<double> porosity = {0.4};
     writer.beginStep(t);
-    writer.writePointSet("solid", 1, z.data(), {{"porosity", z.data(), 1}});
+    writer.writePointSet("solid", 1, position.data(), {{"porosity", porosity.data(), 1}});
     writer.endStep();
 }
 
@@ -410,7 +412,7 @@ std::vector<std::string> indexLinks(const fs::path& index) {
 TEST_F(FieldWriterTest, TheExtendedIndexLinksWhatAWholeOneLinks) {
     {
         qs::FieldWriter writer(dir_.string(), 2);
-        for (int step = 0; step < 12; ++step) writeOneStep(writer, 0.5 * step);  // past HDF5's compact links (8)
+        for (int step = 0; step < 12; ++step) writeOneStep(writer, 0.5 * step, 2);  // past HDF5's compact links (8)
     }
     const std::vector<std::string> extended = indexLinks(dir_ / "fields.h5");
     ASSERT_EQ(extended.size(), 12u);
