@@ -157,22 +157,6 @@ void checkSolidBelow(Real zOverflow, const SolidPoints<D>& solid, Real time, Sur
     }
 }
 
-/// m, the free-water surface from the liquid mass above zRef (a plane one cell above the sand);
-/// points straddling the plane count by their fraction. 0 when no liquid is above zRef.
-template <int D>
-Real waterSurfaceFromMass(const Grid<D>& grid, const LiquidPoints<D>& liquid, Real zRef,
-                          Real density, int pointsPerCell) {
-    Real mass = 0;
-    for (std::size_t p = 0; p < liquid.size(); ++p) {
-        const Real z = liquid.x[p * D + D - 1];
-        const Real half = 0.5 * liquid.mass[p] / density / grid.pointFootprint(&liquid.x[p * D], pointsPerCell);
-        if (z + half <= zRef) continue;
-        mass += std::min(Real(1), (z + half - zRef) / (2 * half)) * liquid.mass[p];
-    }
-    if (mass == 0) return 0.0;
-    return zRef + mass / (density * grid.crossSection());
-}
-
 /// m, top of the highest solid point (its extent from its volume), at least the filter level.
 template <int D>
 Real sandSurfaceOf(const Grid<D>& grid, const SolidPoints<D>& solid, Real filterLevel, int pointsPerCell) {

@@ -86,7 +86,7 @@ ColumnState DoublePointSolver<D>::columnState() const {
     // hydraulic gradient: linear fit of the cell pressures over the interior sand cells (the
     // bottom and top sand cells excluded), i = -(dp/dz)/(rho_L g) - 1
     const auto rows = profile();
-    const Real zTop = s.sandSurface;
+    const Real zTop = bedTop(s.sandSurface);
     double sz = 0, sp = 0, szz = 0, szp = 0;
     int count = 0;
     for (const auto& r : rows) {
@@ -99,6 +99,28 @@ ColumnState DoublePointSolver<D>::columnState() const {
         s.gradient = -slope / (config_.liquid.density * config_.gravity) - 1;
     }
     return s;
+}
+
+// The top of the bed for the gradient's fit: the sand's surface (its highest grain), unless a row
+// below it holds grains for under a fifth of its volume. Rows above such a row are a boil's plume,
+// or grains thrown up to the rim, in free water: fitted with the bed, their level pressure took
+// the gradient down (piping3D read i = 0.92 with a grain at the rim while its bed carried i_c).
+// A fluidised bed fills a row to about half (n = 0.5); a flat surface's own row is never cut.
+template <int D>
+Real DoublePointSolver<D>::bedTop(Real sandSurface) const {
+    constexpr Real kSparse = 0.2;  // -, grains' share of a row's volume below which it is not bed
+    const Index rows = grid_.cells(D - 1);
+    const Index surfaceRow = std::min<Index>(static_cast<Index>(sandSurface / grid_.h()), rows - 1);
+    if (sandBottomRow_ >= surfaceRow) return sandSurface;
+    std::vector<Real> grains(rows, 0.0);
+    for (std::size_t p = 0; p < solid_.size(); ++p) {
+        const Index r = std::clamp<Index>(static_cast<Index>(solid_.x[p * D + D - 1] / grid_.h()), 0, rows - 1);
+        grains[r] += solid_.mass[p] / materials_[solid_.material[p]].grainDensity;
+    }
+    const Real rowVolume = grid_.crossSection() * grid_.h();
+    for (Index r = sandBottomRow_; r < surfaceRow; ++r)
+        if (grains[r] < kSparse * rowVolume) return r * grid_.h();
+    return sandSurface;
 }
 
 template <int D>

@@ -80,7 +80,7 @@ struct ColumnState {
                                   ///<    of the resettled bed under a suspension (settling); the
                                   ///<    filter level when no sand is fluidised
     Real fluidisedShare = 0;      ///< -, fluidised share of the solid mass
-    Real waterSurface = 0;        ///< m, free surface from the liquid mass above the sand
+    Real waterSurface = 0;        ///< m, free surface: the water and grains' volume over the cross-section
     Real gradient = 0;            ///< -, hydraulic gradient fitted over the interior sand cells
     std::vector<Real> monitorFlux;  ///< m/s, filter velocity q = n (v_L - v_S) per monitor
     Real cumulativeInflow = 0;    ///< m3 through the gate (grid flux integrated in time)
@@ -176,6 +176,7 @@ private:
     void computeWeights(Set& set);
     Real waterSurface() const;
     Real sandSurface() const;
+    Real bedTop(Real sandSurface) const;
     Real surchargeNow() const;
     void measureStates(ColumnState& s) const;
     /// The share of a node's footprint inside horizontal ranges (1 without them).

@@ -1,0 +1,73 @@
+// What series.csv reads of a column with grains in its free water: the water's surface and the
+// bed's hydraulic gradient must not follow the highest grain. In piping3D (2026-12-06) a boil's
+// plume carried grains to the rim: the water surface, reckoned from the water above the highest
+// grain, read 0, and the gradient, fitted up to the highest grain, took in rows of free water
+// and read 0.92 while the bed carried its critical gradient.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/CaseLoader.hpp"
+#include "io/Checkpoint.hpp"
+#include "reservoir/ReservoirModel.hpp"
+#include "solver/DoublePointSolver.hpp"
+
+using namespace qs;
+
+namespace {
+
+/// The geostatic column in 2D, two cells wide, in steady upward seepage (the bed carries i = 0.22),
+/// under four cells of water
+CaseConfig seepingColumn() {
+    CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/geostatic");
+    const double h = c.grid.cellSize;
+    c.grid.dimension = 2;
+    c.grid.width = 2 * h;
+    c.column.waterLevel = c.sandTop() + 4 * h;
+    c.column.overflowLevel = c.column.waterLevel;
+    c.column.top = c.sandTop() + 6 * h;
+    c.reservoir.head = c.column.waterLevel;
+    c.initial.filterVelocity = 3.6e-4;  // m/s
+    return c;
+}
+
+/// The column's series after one step, with its highest solid point first moved `lift` (m) up,
+/// into the free water (0: left where it is)
+ColumnState afterOneStep(double lift) {
+    const CaseConfig c = seepingColumn();
+    auto reservoir = makeReservoirModel(c);
+    DoublePointSolver<2> solver(c, *reservoir);
+    CheckpointData data;
+    solver.saveState(data);
+    std::vector<double> x = data.doubles("solid_field0");
+    std::size_t top = 0;
+    for (std::size_t p = 0; p < x.size() / 2; ++p)
+        if (x[p * 2 + 1] > x[top * 2 + 1]) top = p;
+    x[top * 2 + 1] += lift;
+    data.put("solid_field0", x);
+    solver.loadState(data);
+    solver.step();
+    return solver.columnState();
+}
+
+}  // namespace
+
+TEST(ColumnMeasurements, AGrainInTheFreeWaterMovesNeitherTheWaterSurfaceNorTheBedsGradient) {
+    const CaseConfig c = seepingColumn();
+    const double h = c.grid.cellSize;
+    const ColumnState still = afterOneStep(0.0);
+    const ColumnState lifted = afterOneStep(3 * h);  // half a cell under the water's surface
+    ASSERT_GT(lifted.sandSurface, c.sandTop() + 2.5 * h) << "the grain was not lifted";
+    // the surface: the water's level, whatever the grains do
+    EXPECT_NEAR(still.waterSurface, c.column.waterLevel, 1e-4);
+    EXPECT_NEAR(lifted.waterSurface, still.waterSurface, 1e-9);
+    // the gradient: the bed's (0.22), within a thousandth
+    EXPECT_GT(still.gradient, 0.15);
+    EXPECT_NEAR(lifted.gradient, still.gradient, 1e-3 * still.gradient);
+    std::printf("water surface %.6f m (water level %.6f m), lifted %.6f m; gradient %.5f, lifted %.5f\n",
+                still.waterSurface, c.column.waterLevel, lifted.waterSurface, still.gradient, lifted.gradient);
+}
