@@ -179,15 +179,18 @@ Real DoublePointSolver<D>::sandSurface() const {
 }
 
 // The free surface as the column's contents fill it from the gate plane (z = 0): the water (its
-// mass over its density, the chamber's gap above the gate counted as the water it is) and the
-// grains (their mass over their density), over the column's cross-section. The bed starts
-// submerged and its pores stay full, so this holds wherever the grains are. Reckoned from the
-// water above the highest grain instead, a boil's plume or a grain at the rim left no water
-// "above the sand" and the surface read 0 (piping3D, 2026-12-06).
+// mass over its density, and the cavities it opened: a void under the surface lifts it as much),
+// the chamber's gap above the gate (water that came in, not yet a point), and the grains (their
+// mass over their density), over the column's cross-section. The water's compression is left
+// out: the points' masses are the initial state's, pressed already (0.02 mm in the soft water's
+// column). The bed starts submerged and its pores stay full, so this holds wherever the grains
+// are. Reckoned from the water above the highest grain instead, a boil's plume or a grain at the
+// rim left no water "above the sand" and the surface read 0 (piping3D, 2026-12-06).
 template <int D>
 Real DoublePointSolver<D>::waterSurface() const {
     Real volume = chamber_.gapVolume(grid_);
-    for (Real m : liquid_.mass) volume += m / config_.liquid.density;
+    for (std::size_t p = 0; p < liquid_.size(); ++p)
+        volume += liquid_.mass[p] / config_.liquid.density * (1 + liquid_.cavity[p]);
     for (std::size_t p = 0; p < solid_.size(); ++p)
         volume += solid_.mass[p] / materials_[solid_.material[p]].grainDensity;
     return volume / grid_.crossSection();

@@ -20,12 +20,15 @@ using namespace qs;
 
 namespace {
 
-/// The geostatic column in 2D, two cells wide, in steady upward seepage (the bed carries i = 0.22),
-/// under four cells of water
-CaseConfig seepingColumn() {
+enum class Shape { Plane2D, Axisymmetric, ThreeD };
+
+/// The geostatic column two cells wide (in 3D two by two), in steady upward seepage (the bed
+/// carries i = 0.22), under four cells of water
+CaseConfig seepingColumn(Shape shape) {
     CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/geostatic");
     const double h = c.grid.cellSize;
-    c.grid.dimension = 2;
+    c.grid.dimension = shape == Shape::ThreeD ? 3 : 2;
+    if (shape == Shape::Axisymmetric) c.grid.geometry = GridGeometry::Axisymmetric;
     c.grid.width = 2 * h;
     c.column.waterLevel = c.sandTop() + 4 * h;
     c.column.overflowLevel = c.column.waterLevel;
@@ -35,32 +38,33 @@ CaseConfig seepingColumn() {
     return c;
 }
 
-/// The column's series after one step, with its highest solid point first moved `lift` (m) up,
-/// into the free water (0: left where it is)
-ColumnState afterOneStep(double lift) {
-    const CaseConfig c = seepingColumn();
+/// The column's series after one step, with its highest solid point (the last of the highest: by
+/// the wall, or at the axis's far side) first moved `lift` (m) up, into the free water (0: left
+/// where it is). It stands alone over one column of cells: the column is no longer uniform.
+template <int D>
+ColumnState afterOneStep(Shape shape, double lift) {
+    const CaseConfig c = seepingColumn(shape);
     auto reservoir = makeReservoirModel(c);
-    DoublePointSolver<2> solver(c, *reservoir);
+    DoublePointSolver<D> solver(c, *reservoir);
     CheckpointData data;
     solver.saveState(data);
     std::vector<double> x = data.doubles("solid_field0");
     std::size_t top = 0;
-    for (std::size_t p = 0; p < x.size() / 2; ++p)
-        if (x[p * 2 + 1] > x[top * 2 + 1]) top = p;
-    x[top * 2 + 1] += lift;
+    for (std::size_t p = 0; p < x.size() / D; ++p)
+        if (x[p * D + D - 1] >= x[top * D + D - 1]) top = p;
+    x[top * D + D - 1] += lift;
     data.put("solid_field0", x);
     solver.loadState(data);
     solver.step();
     return solver.columnState();
 }
 
-}  // namespace
-
-TEST(ColumnMeasurements, AGrainInTheFreeWaterMovesNeitherTheWaterSurfaceNorTheBedsGradient) {
-    const CaseConfig c = seepingColumn();
+template <int D>
+void checkAGrainInTheFreeWater(Shape shape) {
+    const CaseConfig c = seepingColumn(shape);
     const double h = c.grid.cellSize;
-    const ColumnState still = afterOneStep(0.0);
-    const ColumnState lifted = afterOneStep(3 * h);  // half a cell under the water's surface
+    const ColumnState still = afterOneStep<D>(shape, 0.0);
+    const ColumnState lifted = afterOneStep<D>(shape, 3 * h);  // a cell under the water's surface
     ASSERT_GT(lifted.sandSurface, c.sandTop() + 2.5 * h) << "the grain was not lifted";
     // the surface: the water's level, whatever the grains do
     EXPECT_NEAR(still.waterSurface, c.column.waterLevel, 1e-4);
@@ -71,3 +75,15 @@ TEST(ColumnMeasurements, AGrainInTheFreeWaterMovesNeitherTheWaterSurfaceNorTheBe
     std::printf("water surface %.6f m (water level %.6f m), lifted %.6f m; gradient %.5f, lifted %.5f\n",
                 still.waterSurface, c.column.waterLevel, lifted.waterSurface, still.gradient, lifted.gradient);
 }
+
+}  // namespace
+
+TEST(ColumnMeasurements, AGrainInTheFreeWaterMovesNeitherTheWaterSurfaceNorTheBedsGradient) {
+    checkAGrainInTheFreeWater<2>(Shape::Plane2D);
+}
+
+TEST(ColumnMeasurements, AGrainInTheFreeWaterMovesNeitherInAxisymmetry) {
+    checkAGrainInTheFreeWater<2>(Shape::Axisymmetric);
+}
+
+TEST(ColumnMeasurements, AGrainInTheFreeWaterMovesNeitherIn3D) { checkAGrainInTheFreeWater<3>(Shape::ThreeD); }
