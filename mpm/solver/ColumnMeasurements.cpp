@@ -107,8 +107,8 @@ ColumnState DoublePointSolver<D>::columnState() const {
 // the gradient down (piping3D read i = 0.92 with a grain at the rim while its bed carried i_c).
 // Found from the surface down, so that a gap under a bed lifted off the filter does not cut it.
 // A layer of points fills a row to (1 - n) / solid_per_cell, 0.22 even at n = 0.55 with two; a
-// flat surface's own row is never cut. A mound a quarter of the width wide is (a heaving stripe):
-// the fit then ends at the level bed beside it.
+// flat surface's own row is never cut. A mound a quarter of the width wide (a heaving stripe's)
+// is cut: the fit then ends at the level bed beside it.
 template <int D>
 Real DoublePointSolver<D>::bedTop(Real sandSurface) const {
     constexpr Real kSparse = 0.2;  // -, grains' share of a row's volume below which it is not bed
