@@ -7,7 +7,10 @@
                     (or the middle, when there is none) and a horizontal one at the bed's mid height.
   pipes.gif         the same frames at every output time, as an animation (Pillow's GIF writer)
   pipes.png         pipes against time: their number, the share of the water they carry (and
-                    that of every fluidised base cell), their heights and whether they touch a wall
+                    that of every fluidised base cell), their heights and whether they touch a wall;
+                    in 3D also where each pipe stands around the column: the angle of its centroid
+                    about the column's axis (0 the wall at x max, 90 at y max, 180 at x = 0), which
+                    shows a pipe migrating along the wall
 
 Usage:
   python3 tools/plot_pipes.py CASE/output [--frames 8] [--no-animation] [--fps 8]
@@ -161,14 +164,40 @@ def animate(out, dimension, frames, pipes, limits, fps):
     plt.close(fig)
 
 
-def series(out, pipes):
+def around_the_axis(pipes, axes):
+    """Each pipe's centroid as an angle about the column's axis, in degrees from the x-max wall
+    towards the y-max wall, wrapped into [-135, 225) so that the cut is the corner at x = 0, y = 0."""
+    xs, ys = axes[0], axes[1]
+    xc, yc = (xs[0] + xs[-1]) / 2, (ys[0] + ys[-1]) / 2
+    angles = np.degrees(np.arctan2([p["y"] - yc for p in pipes], [p["x"] - xc for p in pipes]))
+    return np.where(angles < -135, angles + 360, angles)
+
+
+def draw_around(ax, real, axes):
+    """The pipes' places around the column (3D), dot size the share of the water each carries."""
+    for wall, colour, label in ((1.0, "tab:red", "at a wall"), (0.0, "tab:blue", "interior")):
+        sel = [p for p in real if p["wall"] == wall]
+        if sel:
+            ax.scatter([p["time"] for p in sel], around_the_axis(sel, axes),
+                       s=[4 + 60 * p["flux_share"] for p in sel], c=colour, label=label)
+    ax.set_ylim(-135, 225)
+    ax.set_yticks([-90, 0, 90, 180])
+    ax.set_yticklabels(["-90\ny = 0", "0\nx max", "90\ny max", "180\nx = 0"], fontsize=7)
+    ax.set_ylabel("angle about the axis (deg)")
+    for corner in (-45, 45, 135):
+        ax.axhline(corner, color="0.8", lw=0.6, zorder=0)
+    ax.legend(fontsize=8, title="dot size: share of the water", title_fontsize=7)
+
+
+def series(out, pipes, dimension=2, axes=None):
     if not pipes:
         return
     times = sorted({p["time"] for p in pipes})
     count = [next(p["pipes"] for p in pipes if p["time"] == t) for t in times]
     fluid = [next(p["fluidised_flux_share"] for p in pipes if p["time"] == t) for t in times]
     share = [sum(p["flux_share"] for p in pipes if p["time"] == t and p["pipe"] > 0) for t in times]
-    fig, ax = plt.subplots(3, 1, figsize=(7, 7), sharex=True)
+    panels = 4 if dimension == 3 else 3
+    fig, ax = plt.subplots(panels, 1, figsize=(7, 2.3 * panels + 0.1), sharex=True)
     ax[0].step(times, count, where="post")
     ax[0].set_ylabel("pipes")
     ax[1].plot(times, share, label="through pipes")
@@ -181,8 +210,10 @@ def series(out, pipes):
         sel = [p for p in real if p["wall"] == wall]
         ax[2].scatter([p["time"] for p in sel], [p["height"] * 1e3 for p in sel], s=8, c=colour, label=label)
     ax[2].set_ylabel("pipe height (mm)")
-    ax[2].set_xlabel("time (s)")
     ax[2].legend(fontsize=8)
+    if dimension == 3:
+        draw_around(ax[3], real, axes)
+    ax[-1].set_xlabel("time (s)")
     fig.tight_layout()
     fig.savefig(os.path.join(out, "pipes.png"), dpi=120)
     plt.close(fig)
@@ -202,7 +233,7 @@ def main():
     pipes = read_pipes(os.path.join(args.output, "pipes.csv"))
     limits = porosity_limits(frames)
     strip(args.output, dimension, frames, pipes, args.frames, limits)
-    series(args.output, pipes)
+    series(args.output, pipes, dimension, frames[0][3])
     if not args.no_animation:
         animate(args.output, dimension, frames, pipes, limits, args.fps)
     written = [f for f in ("pipes_frames.png", "pipes.png", "pipes.gif") if os.path.exists(os.path.join(args.output, f))]
