@@ -39,8 +39,8 @@ def main():
 
     with h5py.File(f"{case}/output/checkpoint.h5", "r") as f:
         t = f["time"][()]
-        x = f["liquid_field0"][:].reshape(-1, 3)
-        p = f["liquid_field4"][:]
+        x = f["liquid/position"][:].reshape(-1, 3)
+        p = f["liquid/pore_pressure"][:]
     T = cv * t / H**2
 
     def exact(Z):

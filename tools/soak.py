@@ -79,7 +79,7 @@ def main():
         import h5py
         with h5py.File(os.path.join(a.work, "output", "checkpoint.h5"), "r") as f:
             ledger = f["ledger"][:]  # inflow, injected, outflow, initial liquid mass, ...
-            return {"solid": float(f["solid_field2"][:].sum()), "liquid": float(f["liquid_field2"][:].sum()),
+            return {"solid": float(f["solid/mass"][:].sum()), "liquid": float(f["liquid/mass"][:].sum()),
                     "injected": float(ledger[1]), "outflow": float(ledger[2]), "steps": int(f["steps"][()])}
 
     wall1, _ = run([], 0.1 * end)

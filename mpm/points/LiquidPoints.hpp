@@ -36,13 +36,23 @@ struct LiquidPoints {
 
     std::size_t size() const { return mass.size(); }
 
-    /// The index of cavity among forEachField's fields: checkpoints written before it existed
-    /// (2026-12-04) have none (solver/SolverCheckpoint.cpp)
-    static constexpr int kCavityField = 6;
-
+    /// The registry of the liquid points' persistent fields (points/PointSet.hpp). The order is
+    /// that of checkpoints written before the registry (liquid_field0 to liquid_field6).
     template <class F>
-    void forEachField(F&& f) {
-        f(x, D); f(v, D); f(mass, 1); f(volume, 1); f(pressure, 1); f(state, 1); f(cavity, 1);
+    void forEachField(F&& f) { fields(*this, f); }
+    template <class F>
+    void forEachField(F&& f) const { fields(*this, f); }
+
+private:
+    template <class Self, class F>
+    static void fields(Self& p, F& f) {
+        f(p.x, FieldSpec{"position", D});
+        f(p.v, FieldSpec{"velocity", D, true, true});
+        f(p.mass, FieldSpec{"mass", 1, true});
+        f(p.volume, FieldSpec{"volume", 1, true});
+        f(p.pressure, FieldSpec{"pore_pressure", 1, true});
+        f(p.state, FieldSpec{"state", 1, true});
+        f(p.cavity, FieldSpec{"cavity", 1, true, false, "2026-12-04"});
     }
 };
 

@@ -3,8 +3,12 @@
 //
 // A point set is a structure of arrays: one contiguous std::vector per field, `components`
 // values per point. Each set lists its persistent fields in forEachField(f), which calls
-// f(vector, components); everything here (resize, reorder, append, remove) goes through it, so a
-// new field is added in one place. Capacity is reserved up front: inside the time loop these
+// f(vector, FieldSpec): this list is the point fields' registry. Everything that handles a
+// point's state goes through it: resize, reorder, append and remove here, the checkpoint (each
+// field an entry named by the spec: solver/SolverCheckpoint.cpp), the field output (the fields
+// flagged written, under the same name: solver/Run.cpp), the memory estimate (bytesPerPoint,
+// solver/RunSize.cpp) and, over MPI ranks, the packing of the points that move to another rank.
+// A new field is added in one place. Capacity is reserved up front: inside the time loop these
 // operations never allocate as long as the count stays below the reserved capacity.
 #include <algorithm>
 #include <vector>
@@ -13,6 +17,19 @@
 #include "core/Types.hpp"
 
 namespace qs {
+
+/// What the registry says of one point field (forEachField's second argument).
+struct FieldSpec {
+    /// The field's name, a physical one ("velocity", "pore_pressure"): the checkpoint's entry is
+    /// SET/NAME, fields.h5's dataset NAME.
+    const char* name;
+    int components;              ///< values per point (0: the field is empty for this run)
+    bool written = false;        ///< in fields.h5 at every output (integers as doubles)
+    bool vector = false;         ///< one value per axis: padded to 3 in the output, as positions are
+    /// Non-null for a field added after checkpoints were first written: the date it came, and
+    /// what an older checkpoint, which has none, starts it with (zeros).
+    const char* since = nullptr;
+};
 
 /// Per-point shape-function cache, recomputed every step from the positions: the cell holding
 /// the point and, for uGIMP only, the stencil's origin node and per-axis weights (see
@@ -49,12 +66,12 @@ struct ReorderScratch {
 
 template <class Set>
 void resizePoints(Set& set, std::size_t n) {
-    set.forEachField([n](auto& field, int components) { field.resize(n * components); });
+    set.forEachField([n](auto& field, const FieldSpec& f) { field.resize(n * f.components); });
 }
 
 template <class Set>
 void reservePoints(Set& set, std::size_t n, ReorderScratch& scratch, int maxComponents) {
-    set.forEachField([n](auto& field, int components) { field.reserve(n * components); });
+    set.forEachField([n](auto& field, const FieldSpec& f) { field.reserve(n * f.components); });
     scratch.reals.reserve(n * maxComponents);
     scratch.ints.reserve(n * maxComponents);
     scratch.order.reserve(n);
@@ -76,8 +93,9 @@ inline std::vector<int>& scratchFor<int>(ReorderScratch& s) { return s.ints; }
 template <class Set>
 void reorderPoints(Set& set, const std::vector<Index>& order, ReorderScratch& scratch) {
     const Index n = static_cast<Index>(order.size());
-    set.forEachField([&](auto& field, int components) {
+    set.forEachField([&](auto& field, const FieldSpec& f) {
         using T = typename std::decay_t<decltype(field)>::value_type;
+        const int components = f.components;
         if (components == 0) return;  // a field of no components (no constitutive state)
         auto& tmp = detail::scratchFor<T>(scratch);
         tmp.resize(n * components);
@@ -99,7 +117,8 @@ template <class Set>
 std::size_t compactPoints(Set& set, const std::vector<char>& drop, std::size_t first = 0) {
     const std::size_t n = set.size();
     std::size_t kept = n;
-    set.forEachField([&](auto& field, int components) {
+    set.forEachField([&](auto& field, const FieldSpec& f) {
+        const int components = f.components;
         std::size_t out = first;
         for (std::size_t p = first; p < n; ++p) {
             if (drop[p]) continue;
@@ -110,6 +129,17 @@ std::size_t compactPoints(Set& set, const std::vector<char>& drop, std::size_t f
         kept = out;
     });
     return n - kept;
+}
+
+/// Bytes of persistent state per point: what a checkpoint holds of it, and what a point that
+/// moves to another rank carries. (A set's internalCount must be set: it sizes one field.)
+template <class Set>
+double bytesPerPoint(const Set& set) {
+    double bytes = 0;
+    set.forEachField([&](auto& field, const FieldSpec& f) {
+        bytes += double(sizeof(typename std::decay_t<decltype(field)>::value_type)) * f.components;
+    });
+    return bytes;
 }
 
 }  // namespace qs

@@ -34,14 +34,29 @@ struct SolidPoints {
 
     std::size_t size() const { return mass.size(); }
 
-    /// The index of velocityGradient among forEachField's fields: checkpoints written before it
-    /// existed (2026-12-02) have none (solver/SolverCheckpoint.cpp)
-    static constexpr int kVelocityGradientField = 9;
-
+    /// The registry of the solid points' persistent fields (points/PointSet.hpp): names, in the
+    /// checkpoint and fields.h5, and components. The order is that of checkpoints written before
+    /// the registry, whose entries were numbered solid_field0 to solid_field9.
     template <class F>
-    void forEachField(F&& f) {
-        f(x, D); f(v, D); f(mass, 1); f(volume, 1); f(porosity, 1); f(stress, 6);
-        f(state, 1); f(material, 1); f(internal, internalCount); f(velocityGradient, D * D);
+    void forEachField(F&& f) { fields(*this, f); }
+    template <class F>
+    void forEachField(F&& f) const { fields(*this, f); }
+
+private:
+    template <class Self, class F>
+    static void fields(Self& p, F& f) {
+        f(p.x, FieldSpec{"position", D});
+        f(p.v, FieldSpec{"velocity", D, true, true});
+        f(p.mass, FieldSpec{"mass", 1, true});
+        f(p.volume, FieldSpec{"volume", 1, true});
+        f(p.porosity, FieldSpec{"porosity", 1, true});
+        f(p.stress, FieldSpec{"effective_stress", 6, true});
+        f(p.state, FieldSpec{"state", 1, true});
+        f(p.material, FieldSpec{"material", 1});
+        // Mohr-Coulomb: equivalent plastic strain, plastic volumetric strain
+        f(p.internal, FieldSpec{"state_variables", p.internalCount, p.internalCount > 0});
+        // APIC's C; an older checkpoint's points start with C = 0, a PIC transfer for their first step
+        f(p.velocityGradient, FieldSpec{"velocity_gradient", D * D, false, false, "2026-12-02"});
     }
 };
 

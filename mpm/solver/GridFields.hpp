@@ -14,10 +14,12 @@
 //   CellSandState   2b measureSandPorosity, 4b switchLiquidState: each cell's sand
 // Two fields carry state from one step to the next and are checkpointed: NodeFields::relSpeed
 // (the Forchheimer drag's |w|) and CellWater::pressureGradient (where a cell's points sit on its
-// pressure plane).
+// pressure plane). Each set lists them in forEachStateField(f), f(vector, FieldSpec), the grid's
+// part of the field registry (points/PointSet.hpp): the checkpoint saves and loads what it lists.
 #include <vector>
 
 #include "core/Types.hpp"
+#include "points/PointSet.hpp"
 
 namespace qs {
 
@@ -40,6 +42,12 @@ struct NodeFields {
     std::vector<Real> fedWeight;       ///< [D] -, how far the node is fed with sand, 1 for a held component
     std::vector<char> diffusionNode;   ///< where the front diffusion acts (FrontDiffusion.cpp)
     bool anyDiffusion = false;         ///< whether any node is one
+
+    /// The fields carried from one step to the next (checkpointed as nodes/NAME).
+    template <class F>
+    void forEachStateField(F&& f) { f(relSpeed, FieldSpec{"rel_speed", 1}); }
+    template <class F>
+    void forEachStateField(F&& f) const { f(relSpeed, FieldSpec{"rel_speed", 1}); }
 
     void resize(Index nodes) {
         for (auto* a : {&massS, &massL, &porosity, &sandPorosity, &drag, &relSpeed, &slopeMass})
@@ -103,6 +111,15 @@ struct CellWater {
     std::vector<Real> cavity;            ///< -, the cell's cavity strain, 0 without one (physics/Cavitation.hpp)
     std::vector<Real> porosity;          ///< -, n_c, the mean of the cell's nodal porosities
     std::vector<Real> pressureGradient;  ///< [D] Pa/m, grad p_c (state: checkpointed)
+
+    /// The fields carried from one step to the next (checkpointed as cells/NAME); a checkpoint
+    /// written before 2026-12-04 has no pressure gradient, which then starts at zero.
+    template <class F>
+    void forEachStateField(F&& f) { f(pressureGradient, FieldSpec{"pressure_gradient", D, false, true, "2026-12-04"}); }
+    template <class F>
+    void forEachStateField(F&& f) const {
+        f(pressureGradient, FieldSpec{"pressure_gradient", D, false, true, "2026-12-04"});
+    }
 
     void resize(Index cells) {
         for (auto* a : {&pressure, &weight, &cavity, &porosity}) a->assign(cells, 0.0);

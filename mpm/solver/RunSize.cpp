@@ -12,6 +12,8 @@
 #include "core/Error.hpp"
 #include "materials/ConstitutiveModels.hpp"
 #include "physics/WaveSpeeds.hpp"
+#include "points/LiquidPoints.hpp"
+#include "points/SolidPoints.hpp"
 #include "solver/ColumnBuilder.hpp"
 
 namespace qs {
@@ -33,16 +35,29 @@ std::int64_t cellsIn(double length, double h) { return saturatedCount(std::round
 /// The shape-function cache: the cell, and for uGIMP the stencil's start and w and dw (3 per axis);
 /// linear weights are taken from the positions where they are used (solver/PointStencil.hpp).
 double shapeBytes(int D, bool gimp) { return 8 + (gimp ? 8 + 8.0 * 6 * D : 0.0); }
-double solidBytes(int D, bool gimp) {
-    const double state = 8.0 * (2 * D + 3 + 6 + D * D) + 4 + 4;  // x, v, mass, volume, porosity, stress, C; state, material
-    return state + shapeBytes(D, gimp);
+/// The persistent state of a point, from the point sets' registries (points/PointSet.hpp);
+/// `internal` is the constitutive state variables a solid point carries.
+template <int D>
+PointStateBytes registryBytes(int internal) {
+    SolidPoints<D> solid;
+    solid.internalCount = internal;
+    return {bytesPerPoint(solid), bytesPerPoint(LiquidPoints<D>{})};
 }
-double liquidBytes(int D, bool gimp) {
-    const double state = 8.0 * (2 * D + 3) + 4;          // x, v, mass, volume, pressure; state
+PointStateBytes pointStateBytesOf(int D, int internal) {
+    switch (D) {
+        case 1: return registryBytes<1>(internal);
+        case 2: return registryBytes<2>(internal);
+        default: return registryBytes<3>(internal);
+    }
+}
+double solidBytes(int D, bool gimp, const PointStateBytes& state) {
+    return state.solid + 4 + shapeBytes(D, gimp);  // the stress return's code: per-step scratch
+}
+double liquidBytes(int D, bool gimp, const PointStateBytes& state) {
     const double shape = shapeBytes(D, gimp);
     const double perStep = 8 + 8 + 1;                    // weight V*, strain increment, drop flag
     const double scratch = 8.0 * 6 + 4.0 * 6 + 8;        // reorder scratch (reals, ints, order)
-    return state + shape + perStep + scratch;
+    return state.liquid + shape + perStep + scratch;
 }
 // the field sets of solver/GridFields.hpp: per node 7 scalars, 3 transfer sums, 8 vectors, the
 // diffusion flag and the boundary masks (2 per axis); per cell 3 indices, 6 flags, 8 scalars and
@@ -51,6 +66,19 @@ double nodeBytes(int D) { return 8.0 * (7 + 3) + 8.0 * 8 * D + 1 + 2.0 * D; }
 double cellBytes(int D) { return 8.0 * 3 + 6 + 8.0 * (8 + D); }
 
 }  // namespace
+
+PointStateBytes pointStateBytes(const CaseConfig& config) {
+    int internal = 0;  // the most state variables any material's model carries (DoublePointSolver)
+    for (const auto& m : config.materials) internal = std::max(internal, makeConstitutiveModel(m)->stateCount());
+    return pointStateBytesOf(config.grid.dimension, internal);
+}
+
+EntityBytes entityBytes(const CaseConfig& config) {
+    const int D = config.grid.dimension;
+    const bool gimp = config.grid.shapeFunctions == ShapeFunctionKind::Gimp;
+    const PointStateBytes state = pointStateBytes(config);
+    return {solidBytes(D, gimp, state), liquidBytes(D, gimp, state), nodeBytes(D), cellBytes(D)};
+}
 
 std::int64_t liquidCapacity(const CaseConfig& config, std::int64_t cells, std::int64_t initialLiquid) {
     const int D = config.grid.dimension;
@@ -126,9 +154,10 @@ RunSize estimateRunSize(const CaseConfig& config) {
 
     // The solver's arrays, and one more copy of the point state (a checkpoint being written, or
     // the rollback copy of an implicit coupling window).
-    const double stateCopy = r.solidPoints * 8.0 * (2 * D + 11 + D * D) + r.liquidCapacity * 8.0 * (2 * D + 4);
+    const PointStateBytes state = pointStateBytes(config);
+    const double stateCopy = r.solidPoints * state.solid + r.liquidCapacity * state.liquid;
     const bool gimp = config.grid.shapeFunctions == ShapeFunctionKind::Gimp;
-    r.peakBytes = r.solidPoints * solidBytes(D, gimp) + r.liquidCapacity * liquidBytes(D, gimp) +
+    r.peakBytes = r.solidPoints * solidBytes(D, gimp, state) + r.liquidCapacity * liquidBytes(D, gimp, state) +
                   r.nodes * nodeBytes(D) + r.cells * cellBytes(D) + stateCopy;
 
     const double updates = double(r.steps) * (double(r.solidPoints) + double(r.liquidPoints));  // both may saturate

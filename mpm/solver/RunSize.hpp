@@ -38,6 +38,21 @@ struct RunSize {
     double wallSeconds = 0;            ///< estimated wall time on one thread
 };
 
+/// Bytes of one point's persistent state, solid and liquid: what the point sets' registries
+/// list (points/PointSet.hpp), as a checkpoint holds it and a point that changes rank carries it.
+struct PointStateBytes {
+    double solid = 0, liquid = 0;
+};
+PointStateBytes pointStateBytes(const CaseConfig& config);
+
+/// Bytes the solver keeps per solid point, liquid point (of the reserved capacity), node and
+/// cell: its arrays, shape-function caches and scratch (estimateRunSize's terms; the
+/// decomposition's memory per rank, parallel/Decomposition.hpp).
+struct EntityBytes {
+    double solid = 0, liquid = 0, node = 0, cell = 0;
+};
+EntityBytes entityBytes(const CaseConfig& config);
+
 /// Liquid points the solver reserves room for: every cell of the grid at the free water's lattice
 /// density (the densest the injected points reach, in the sand as in free water), a quarter more
 /// for points bunching, or the initial points if more. Beyond it the point arrays grow (a

@@ -15,12 +15,13 @@ namespace qs {
 
 namespace {
 
+/// Each persistent field of a point set as the entry SET/NAME (the registry's names,
+/// points/PointSet.hpp): doubles as doubles, integer codes as integers.
 template <class Set>
-void putSet(CheckpointData& data, const std::string& prefix, Set& set) {
-    int k = 0;
-    set.forEachField([&](auto& field, int) {
+void putSet(CheckpointData& data, const std::string& set, const Set& points) {
+    points.forEachField([&](auto& field, const FieldSpec& f) {
         using T = typename std::decay_t<decltype(field)>::value_type;
-        const std::string name = prefix + "_field" + std::to_string(k++);
+        const std::string name = set + "/" + f.name;
         if constexpr (std::is_same_v<T, double>) {
             data.put(name, std::vector<double>(field.begin(), field.end()));
         } else {
@@ -35,18 +36,28 @@ void putSet(CheckpointData& data, const std::string& prefix, Set& set) {
 // before the first step; found by fuzzing (tests/fuzz/fuzz_checkpoint_state.cpp).
 const char* const kNotThisCase = ": the checkpoint is damaged or of another case";
 
-/// Fields from index firstOptional on may be missing (a checkpoint written before they existed):
-/// they start at zero.
+/// The entry of field number k, named f: SET/NAME, or in a checkpoint written before the
+/// registry (2026-12-07) SET_fieldK, the fields numbered in the registry's order.
+std::string entryName(const CheckpointData& data, const std::string& set, const FieldSpec& f, int k) {
+    const std::string name = set + "/" + f.name;
+    const std::string numbered = set + "_field" + std::to_string(k);
+    QS_CHECK(!(data.has(name) && data.has(numbered)),
+             "entries '" << name << "' and '" << numbered << "' are one field written twice" << kNotThisCase);
+    return data.has(numbered) ? numbered : name;
+}
+
+/// Every field of the registry from its entry. A field the registry dates (FieldSpec::since)
+/// may be missing, in a checkpoint written before it existed: it starts at zero.
 template <class Set>
-void getSet(const CheckpointData& data, const std::string& prefix, Set& set, int dimension,
-            int firstOptional = std::numeric_limits<int>::max()) {
+void getSet(const CheckpointData& data, const std::string& set, Set& points, int dimension) {
     int k = 0;
-    std::size_t points = 0;
-    set.forEachField([&](auto& field, int components) {
+    std::size_t count = 0;
+    points.forEachField([&](auto& field, const FieldSpec& f) {
         using T = typename std::decay_t<decltype(field)>::value_type;
-        const std::string name = prefix + "_field" + std::to_string(k++);
-        if (k - 1 >= firstOptional && !data.has(name)) {
-            field.assign(points * static_cast<std::size_t>(components), T{});
+        const std::string name = entryName(data, set, f, k++);
+        const std::size_t components = static_cast<std::size_t>(f.components);
+        if (f.since && !data.has(name)) {
+            field.assign(count * components, T{});
             return;
         }
         std::size_t size = 0;
@@ -64,10 +75,10 @@ void getSet(const CheckpointData& data, const std::string& prefix, Set& set, int
             field.assign(v.begin(), v.end());
             size = v.size();
         }
-        if (k == 1) points = size / static_cast<std::size_t>(dimension);  // the first field is x
-        QS_CHECK(size == points * static_cast<std::size_t>(components),
-                 "entry '" << name << "' holds " << size << " values, " << points << " " << prefix
-                           << " points need " << points * components << kNotThisCase);
+        if (k == 1) count = size / static_cast<std::size_t>(dimension);  // the first field is the position
+        QS_CHECK(size == count * components,
+                 "entry '" << name << "' holds " << size << " values, " << count << " " << set << " points need "
+                           << count * components << kNotThisCase);
     });
 }
 
@@ -111,6 +122,31 @@ const std::vector<double>& finiteValues(const CheckpointData& data, const char* 
     return v;
 }
 
+/// The grid's carried fields (solver/GridFields.hpp) as the entries GRID/NAME.
+template <class Fields>
+void putGridFields(CheckpointData& data, const std::string& grid, const Fields& fields) {
+    fields.forEachStateField(
+        [&](const std::vector<Real>& field, const FieldSpec& f) { data.put(grid + "/" + f.name, field); });
+}
+
+/// The grid's carried fields from GRID/NAME, or from NAME in a checkpoint written before the
+/// registry (2026-12-07). A field the registry dates starts at zero from an older checkpoint.
+template <class Fields>
+void getGridFields(const CheckpointData& data, const std::string& grid, Fields& fields) {
+    fields.forEachStateField([&](std::vector<Real>& field, const FieldSpec& f) {
+        std::string name = grid + "/" + f.name;
+        if (!data.has(name) && data.has(f.name)) name = f.name;
+        if (f.since && !data.has(name)) {
+            std::fill(field.begin(), field.end(), 0.0);
+            return;
+        }
+        const auto& v = finiteValues(data, name.c_str(), 0);
+        QS_CHECK(v.size() == field.size(), "entry '" << name << "' holds " << v.size() << " values, the case's grid needs "
+                                                     << field.size() << ": the checkpoint's grid differs from the case's grid");
+        field = v;
+    });
+}
+
 }  // namespace
 
 // The water the checkpoint was written with: the semi-implicit step's size does not see K_L, so
@@ -136,17 +172,16 @@ void DoublePointSolver<D>::checkWater(const CheckpointData& data, bool semi) con
 
 template <int D>
 void DoublePointSolver<D>::saveState(CheckpointData& data) const {
-    auto& self = const_cast<DoublePointSolver<D>&>(*this);  // forEachField is non-const by design
     data.putScalar("dimension", D);
     data.putScalar("time", time_);
     data.putScalar("steps", static_cast<double>(steps_));
     data.putScalar("dt", dt_);
     data.putScalar("semi_implicit", config_.time.scheme == TimeScheme::SemiImplicit ? 1 : 0);
     data.putScalar("bulk_modulus", config_.liquid.bulkModulus);
-    putSet(data, "solid", self.solid_);
-    putSet(data, "liquid", self.liquid_);
-    data.put("rel_speed", nodes_.relSpeed);
-    data.put("pressure_gradient", water_.pressureGradient);
+    putSet(data, "solid", solid_);
+    putSet(data, "liquid", liquid_);
+    putGridFields(data, "nodes", nodes_);
+    putGridFields(data, "cells", water_);
     data.putScalar("cavity_is_water_strain", 1);
     data.put("gap", const_cast<InflowChamber<D>&>(chamber_).gaps());
     data.put("reservoir", reservoir_.saveState());
@@ -173,11 +208,11 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     QS_CHECK(std::abs(data.scalar("dt") - dt_) <= 1e-12 * dt_,
              "the checkpoint was written with dt = " << data.scalar("dt") << " s, the case now gives "
                                                      << dt_ << " s: grid or material data changed");
-    // the solid's velocity gradient (APIC, field 9) came on 2026-12-02: an older checkpoint's
-    // points start with C = 0, a PIC transfer for their first step
-    getSet(data, "solid", solid_, D, SolidPoints<D>::kVelocityGradientField);
+    // fields the registry dates (the solid's velocity gradient, the water's cavity) start at zero
+    // from a checkpoint written before them
+    getSet(data, "solid", solid_, D);
     solid_.stressReturn.assign(solid_.size(), 0);  // per-step scratch, one per point of the checkpoint
-    getSet(data, "liquid", liquid_, D, LiquidPoints<D>::kCavityField);
+    getSet(data, "liquid", liquid_, D);
     // Until 2026-12-05 a cavity was a strain of the mixture, which is n times the water's (n the
     // porosity): read as the water's, an old checkpoint's cavities in sand are a factor n too
     // small, and close early. Rare (cavities), and warned rather than converted.
@@ -197,18 +232,10 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     for (std::size_t p = 0; p < solid_.porosity.size(); ++p)
         QS_CHECK(solid_.porosity[p] > 0 && solid_.porosity[p] < 1,
                  "solid point " << p << " has porosity " << solid_.porosity[p] << ", outside (0, 1)" << kNotThisCase);
-    const auto& rs = finiteValues(data, "rel_speed", 0);
-    QS_CHECK(rs.size() == nodes_.relSpeed.size(), "the checkpoint's grid differs from the case's grid");
-    nodes_.relSpeed = rs;
+    getGridFields(data, "nodes", nodes_);
     // the cells' pore-pressure gradient of the last step, which centres this step's cell pressures
-    // (PorePressure.cpp); a checkpoint written before it was kept starts from none
-    if (data.has("pressure_gradient")) {
-        const auto& pg = finiteValues(data, "pressure_gradient", 0);
-        QS_CHECK(pg.size() == water_.pressureGradient.size(), "the checkpoint's grid differs from the case's grid");
-        water_.pressureGradient = pg;
-    } else {
-        std::fill(water_.pressureGradient.begin(), water_.pressureGradient.end(), 0.0);
-    }
+    // (PorePressure.cpp)
+    getGridFields(data, "cells", water_);
     const auto& gaps = finiteValues(data, "gap", 0);
     QS_CHECK(gaps.size() == chamber_.gaps().size(),
              "the checkpoint's chamber has " << gaps.size() << " injection slots, the case's " << chamber_.gaps().size()

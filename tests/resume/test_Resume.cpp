@@ -17,6 +17,7 @@
 #include <cmath>
 #include <csignal>
 #include <limits>
+#include <map>
 
 using namespace qs;
 namespace fs = std::filesystem;
@@ -59,16 +60,41 @@ std::string loadingMessage(const CaseConfig& c, const CheckpointData& data) {
     return "accepted";
 }
 
-/// The checkpoint without one entry, as an older version wrote it.
-CheckpointData without(const CheckpointData& data, const std::string& entry) {
+/// The checkpoint with its entries renamed (`rename` gives the new name, empty to leave one out).
+template <class Rename>
+CheckpointData renamed(const CheckpointData& data, Rename rename) {
     CheckpointData older;
     for (const std::string& name : data.names()) {
-        if (name == entry) continue;
-        try { older.put(name, data.doubles(name)); continue; } catch (const Error&) {}
-        try { older.put(name, data.integers(name)); continue; } catch (const Error&) {}
-        older.putScalar(name, data.scalar(name));
+        const std::string to = rename(name);
+        if (to.empty()) continue;
+        try { older.put(to, data.doubles(name)); continue; } catch (const Error&) {}
+        try { older.put(to, data.integers(name)); continue; } catch (const Error&) {}
+        older.putScalar(to, data.scalar(name));
     }
     return older;
+}
+
+/// The checkpoint without one entry, as an older version wrote it.
+CheckpointData without(const CheckpointData& data, const std::string& entry) {
+    return renamed(data, [&](const std::string& name) { return name == entry ? std::string() : name; });
+}
+
+/// The entry names of checkpoints written before the field registry (2026-12-07): the point
+/// fields numbered in the registry's order, the grid's carried fields at the root.
+std::string numberedName(const std::string& name) {
+    static const std::map<std::string, std::string> before = {
+        {"solid/position", "solid_field0"},         {"solid/velocity", "solid_field1"},
+        {"solid/mass", "solid_field2"},             {"solid/volume", "solid_field3"},
+        {"solid/porosity", "solid_field4"},         {"solid/effective_stress", "solid_field5"},
+        {"solid/state", "solid_field6"},            {"solid/material", "solid_field7"},
+        {"solid/state_variables", "solid_field8"},  {"solid/velocity_gradient", "solid_field9"},
+        {"liquid/position", "liquid_field0"},       {"liquid/velocity", "liquid_field1"},
+        {"liquid/mass", "liquid_field2"},           {"liquid/volume", "liquid_field3"},
+        {"liquid/pore_pressure", "liquid_field4"},  {"liquid/state", "liquid_field5"},
+        {"liquid/cavity", "liquid_field6"},         {"nodes/rel_speed", "rel_speed"},
+        {"cells/pressure_gradient", "pressure_gradient"}};
+    const auto it = before.find(name);
+    return it == before.end() ? name : it->second;
 }
 
 }  // namespace
@@ -255,11 +281,11 @@ TEST(Resume, ACheckpointThatNoStepCouldTakeIsRefusedNamingWhy) {
         return loadingMessage(c, bad);
     };
     const double inf = std::numeric_limits<double>::infinity();
-    EXPECT_NE(refusal("solid_field0", 3, -inf).find("'solid_field0' value 3 is -inf"), std::string::npos);
-    EXPECT_NE(refusal("solid_field0", 3, -0.01).find("solid point 3 at x0 = -0.01 m, outside the grid"),
+    EXPECT_NE(refusal("solid/position", 3, -inf).find("'solid/position' value 3 is -inf"), std::string::npos);
+    EXPECT_NE(refusal("solid/position", 3, -0.01).find("solid point 3 at x0 = -0.01 m, outside the grid"),
               std::string::npos);
-    EXPECT_NE(refusal("liquid_field1", 0, 1e3).find("liquid point 0"), std::string::npos);  // faster than a cell per step
-    EXPECT_NE(refusal("solid_field4", 2, 1.5).find("solid point 2 has porosity 1.5"), std::string::npos);
+    EXPECT_NE(refusal("liquid/velocity", 0, 1e3).find("liquid point 0"), std::string::npos);  // faster than a cell per step
+    EXPECT_NE(refusal("solid/porosity", 2, 1.5).find("solid point 2 has porosity 1.5"), std::string::npos);
     EXPECT_NE(refusal("ledger", 1, std::nan("")).find("'ledger' value 1 is nan"), std::string::npos);
     CheckpointData shortLedger = good;
     shortLedger.put("ledger", std::vector<double>{1.0});
@@ -281,11 +307,11 @@ TEST(Resume, ACheckpointWrittenBeforeAPICStillLoads) {
     for (int k = 0; k < 200; ++k) solver.step();
     CheckpointData now;
     solver.saveState(now);
-    ASSERT_TRUE(now.has("solid_field9"));
+    ASSERT_TRUE(now.has("solid/velocity_gradient"));
     double largest = 0;
     for (double value : solver.solid().velocityGradient) largest = std::max(largest, std::abs(value));
     ASSERT_GT(largest, 0.0) << "the column is not moving: C would be zero whether saved or not";
-    const CheckpointData older = without(now, "solid_field9");
+    const CheckpointData older = without(now, "solid/velocity_gradient");
     const auto r1 = makeReservoirModel(c);
     DoublePointSolver<1> fromOlder(c, *r1);
     ASSERT_NO_THROW(fromOlder.loadState(older));
@@ -296,6 +322,66 @@ TEST(Resume, ACheckpointWrittenBeforeAPICStillLoads) {
     DoublePointSolver<1> fromNow(c, *r2);
     fromNow.loadState(now);
     EXPECT_EQ(fromNow.solid().velocityGradient, solver.solid().velocityGradient);
+}
+
+// Checkpoints written before the field registry numbered the point fields (solid_field0..9,
+// liquid_field0..6) and kept the grid's carried fields at the root: one resumes to the same state,
+// bit for bit, as the same checkpoint under the registry's names, and goes on to the same step.
+// Every field the registry lists is named in the map of old names (a field added to the registry
+// without a date would fail here, as an older checkpoint cannot hold it).
+TEST(Resume, ACheckpointWrittenBeforeTheFieldRegistryStillLoads) {
+    CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/terzaghi");
+    c.time.scheme = TimeScheme::SemiImplicit;  // the cells' pressure gradient is carried, not zero
+    const auto reservoir = makeReservoirModel(c);
+    DoublePointSolver<1> solver(c, *reservoir);
+    for (int k = 0; k < 50; ++k) solver.step();
+    CheckpointData now;
+    solver.saveState(now);
+    int listed = 0;
+    solver.solid().forEachField([&](const auto&, const FieldSpec& f) {
+        EXPECT_NE(numberedName(std::string("solid/") + f.name), std::string("solid/") + f.name) << f.name;
+        ++listed;
+    });
+    EXPECT_EQ(listed, 10);
+    const CheckpointData older = renamed(now, numberedName);
+    ASSERT_FALSE(older.has("solid/position"));
+    ASSERT_TRUE(older.has("solid_field9") && older.has("liquid_field6") && older.has("pressure_gradient"));
+
+    const auto r1 = makeReservoirModel(c), r2 = makeReservoirModel(c);
+    DoublePointSolver<1> fromOlder(c, *r1), fromNow(c, *r2);
+    fromOlder.loadState(older);
+    fromNow.loadState(now);
+    for (int k = 0; k < 20; ++k) {
+        fromOlder.step();
+        fromNow.step();
+    }
+    CheckpointData a, b;
+    fromOlder.saveState(a);
+    fromNow.saveState(b);
+    ASSERT_EQ(a.names(), b.names());
+    for (const std::string& name : a.names()) {
+        try {
+            EXPECT_EQ(a.doubles(name), b.doubles(name)) << name;
+        } catch (const Error&) {
+            try { EXPECT_EQ(a.integers(name), b.integers(name)) << name; } catch (const Error&) {
+                EXPECT_EQ(a.scalar(name), b.scalar(name)) << name;
+            }
+        }
+    }
+
+    // one field under both names is refused, not read from either
+    CheckpointData both = now;
+    both.put("liquid_field1", now.doubles("liquid/velocity"));
+    const auto r3 = makeReservoirModel(c);
+    DoublePointSolver<1> twice(c, *r3);
+    try {
+        twice.loadState(both);
+        FAIL() << "a field written twice was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("'liquid/velocity' and 'liquid_field1' are one field written twice"),
+                  std::string::npos)
+            << e.what();
+    }
 }
 
 // The semi-implicit step's size does not see K_L, so a change of water between a checkpoint and

@@ -50,7 +50,7 @@ void setModeVelocity(CheckpointData& data, const std::string& prefix, const Set&
         v[p * 2] = -v0 * kr / k * std::cyl_bessel_j(1.0, kr * r) * std::cos(kz * z);
         v[p * 2 + 1] = -v0 * kz / k * std::cyl_bessel_j(0.0, kr * r) * std::sin(kz * z);
     }
-    data.put(prefix + "_field1", v);  // the second field of a point set is its velocity
+    data.put(prefix + "/velocity", v);
 }
 
 /// The period of p(t) from the upward zero crossings of p - mean(p) (linear interpolation),

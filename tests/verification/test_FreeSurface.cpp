@@ -70,7 +70,7 @@ TEST(FreeSurface2D, ASloshingModeOfTheTopCellsDoesNotGrow) {
     const auto& l = solver.liquid();
     for (std::size_t p = 0; p < l.size(); ++p)
         if (inTopCells(&l.x[p * 2])) v[p * 2 + 1] += seed * pattern(&l.x[p * 2]);
-    data.put("liquid_field1", v);  // x, v, mass, volume, pressure
+    data.put("liquid/velocity", v);  // x, v, mass, volume, pressure
     solver.loadState(data);
     const double start = amplitude();
     ASSERT_NEAR(start, seed, 0.05 * seed);
@@ -103,7 +103,7 @@ TEST(FreeSurface2D, AStrayPointAboveLeavesThePorePressureBelowAsItWas) {
     solver.saveState(data);
     std::vector<double> x(l.x.begin(), l.x.end());
     x[stray * 2 + 1] += h;
-    data.put("liquid_field0", x);
+    data.put("liquid/position", x);
     solver.loadState(data);
     const double strayMass = l.mass[stray];
     // While the point falls back through the cell above (sqrt(2 h / g) = 44 ms) the pore pressure
@@ -203,7 +203,7 @@ SeededFreeWater freeWaterAfter(double picShare, double noise, double swirl, int 
     for (std::size_t p = 0; p < l.size(); ++p)
         if (free(p))
             for (int d = 0; d < 2; ++d) v[p * 2 + d] += 2 * noise * next() + swirl * vortex(p, d);
-    data.put("liquid_field1", v);  // the liquid points' velocities
+    data.put("liquid/velocity", v);  // the liquid points' velocities
     solver.loadState(data);
     double a0 = 0, r0 = 0, a = 0, r = 0;
     measure(a0, r0);

@@ -54,16 +54,16 @@ Velocities afterOneStep(const CaseConfig& c, const double du[2]) {
     CheckpointData data;
     solver.saveState(data);
     auto toBoundaries = [&](const char* set, bool sand) {
-        std::vector<double> x = data.doubles(std::string(set) + "_field0");
-        std::vector<double> v = data.doubles(std::string(set) + "_field1");
+        std::vector<double> x = data.doubles(std::string(set) + "/position");
+        std::vector<double> v = data.doubles(std::string(set) + "/velocity");
         for (std::size_t p = 0; p < x.size() / 2; ++p) {
             if (x[p * 2] < 0.5 * h) x[p * 2] = h / 64;
             if (x[p * 2] > W - 0.5 * h) x[p * 2] = W - h / 64;
             if (sand && x[p * 2 + 1] < filter + 0.5 * h) x[p * 2 + 1] = filter + h / 64;
             for (int d = 0; d < 2; ++d) v[p * 2 + d] += du[d];
         }
-        data.put(std::string(set) + "_field0", x);
-        data.put(std::string(set) + "_field1", v);
+        data.put(std::string(set) + "/position", x);
+        data.put(std::string(set) + "/velocity", v);
     };
     toBoundaries("solid", true);
     toBoundaries("liquid", false);

@@ -280,7 +280,7 @@ TEST(PressureCheckerboard, ACheckerboardOfCellPressuresDies) {
     const auto& l = solver.liquid();
     for (std::size_t p = 0; p < l.size(); ++p)
         if (inSand(&l.x[p * 2])) pressure[p] += delta * colour(&l.x[p * 2]);
-    data.put("liquid_field4", pressure);  // x, v, mass, volume, pressure
+    data.put("liquid/pore_pressure", pressure);  // x, v, mass, volume, pressure
     solver.loadState(data);
     const double start = amplitude();
     ASSERT_NEAR(start, delta, 0.05 * delta);

@@ -50,10 +50,10 @@ TEST(CellWater, ACavityAndPressedWaterMeetingInACellKeepTheirVolume) {
         cavity[p] = k == 0 ? open : 0.0;
     }
     volume[inCell[0]] *= c.material("sand").porosity;
-    data.put("liquid_field3", volume);
-    data.put("liquid_field4", pressure);
-    data.put("liquid_field6", cavity);
-    data.put("pressure_gradient", std::vector<double>(data.doubles("pressure_gradient").size(), 0.0));
+    data.put("liquid/volume", volume);
+    data.put("liquid/pore_pressure", pressure);
+    data.put("liquid/cavity", cavity);
+    data.put("cells/pressure_gradient", std::vector<double>(data.doubles("cells/pressure_gradient").size(), 0.0));
     solver.loadState(data);
     solver.step();  // its forces phase mixes the cell's points into the cell's water
 

@@ -48,12 +48,12 @@ ColumnState afterOneStep(Shape shape, double lift) {
     DoublePointSolver<D> solver(c, *reservoir);
     CheckpointData data;
     solver.saveState(data);
-    std::vector<double> x = data.doubles("solid_field0");
+    std::vector<double> x = data.doubles("solid/position");
     std::size_t top = 0;
     for (std::size_t p = 0; p < x.size() / D; ++p)
         if (x[p * D + D - 1] >= x[top * D + D - 1]) top = p;
     x[top * D + D - 1] += lift;
-    data.put("solid_field0", x);
+    data.put("solid/position", x);
     solver.loadState(data);
     solver.step();
     return solver.columnState();

@@ -58,31 +58,30 @@ struct ColumnWithAPointPastTheSurface {
         solver = std::make_unique<DoublePointSolver<D>>(config, *reservoir);
         CheckpointData data;
         solver->saveState(data);
-        const std::vector<double> x = data.doubles("solid_field0");
+        const std::vector<double> x = data.doubles("solid/position");
         const std::size_t points = x.size() / D;
         std::size_t top = 0;
         for (std::size_t p = 0; p < points; ++p)
             if (x[p * D + D - 1] > x[top * D + D - 1]) top = p;
-        // every field of the solid points (SolidPoints::forEachField): the copy appended
-        for (int k = 0; k < 10; ++k) {
-            const std::string name = "solid_field" + std::to_string(k);
-            if (k == 6 || k == 7) {  // state, material
-                std::vector<std::int64_t> f = data.integers(name);
-                f.push_back(f[top]);
-                data.put(name, f);
-                continue;
+        // every field of the solid points (their registry, SolidPoints::forEachField): the copy appended
+        solver->solid().forEachField([&](const auto& field, const FieldSpec& f) {
+            const std::string name = std::string("solid/") + f.name;
+            if constexpr (std::is_same_v<typename std::decay_t<decltype(field)>::value_type, int>) {
+                std::vector<std::int64_t> values = data.integers(name);
+                values.push_back(values[top]);
+                data.put(name, values);
+            } else {
+                std::vector<double> values = data.doubles(name);
+                for (int c = 0; c < f.components; ++c) values.push_back(values[top * f.components + c]);
+                data.put(name, values);
             }
-            std::vector<double> f = data.doubles(name);
-            const std::size_t components = f.size() / points;
-            for (std::size_t c = 0; c < components; ++c) f.push_back(f[top * components + c]);
-            data.put(name, f);
-        }
+        });
         z = (std::round(config.sandTop() / h) + offset) * h;
-        std::vector<double> moved = data.doubles("solid_field0");
+        std::vector<double> moved = data.doubles("solid/position");
         moved.back() = z;
-        data.put("solid_field0", moved);
-        stressBefore = data.doubles("solid_field5")[top * 6 + 2];  // Voigt zz
-        porosityBefore = data.doubles("solid_field4")[top];
+        data.put("solid/position", moved);
+        stressBefore = data.doubles("solid/effective_stress")[top * 6 + 2];  // Voigt zz
+        porosityBefore = data.doubles("solid/porosity")[top];
         solver->loadState(data);
     }
     /// The copy after the steps: still the highest point.
