@@ -2,7 +2,8 @@
 // Running a case: the time loop around DoublePointSolver with output, progress and checkpoints.
 //
 //   CaseConfig config = loadCase("cases/verification/geostatic");
-//   RunSummary s = runCase(config, RunOptions{});
+//   RunSummary s = runCase(config, RunOptions{});   // a Simulation opened, advanced to
+//                                                   // time.end and finished (solver/Simulation.hpp)
 //
 // A built-in reservoir (constant head, lumped) is advanced inside every MPM step; a windowed
 // model (OpenFOAM) through the coupling scheme of [coupling], window by window, with the

@@ -1,0 +1,55 @@
+#pragma once
+// Simulation: one run of a case as an object, the seam that `quicksand run`, the ranks of an MPI
+// run and a Python session (issue 43) drive alike.
+//
+//   Simulation sim(config, RunOptions{});   // open: the case resolved, the output directory
+//                                           // rotated, the solver built, resumed or past its
+//                                           // gravity stage, the first output written
+//   sim.advanceTo(10.0);                    // s: steps, with the case's outputs, checkpoints
+//                                           // and progress on the way
+//   sim.writeCheckpoint();                  // now, whatever the interval
+//   RunSummary s = sim.finish();            // the last checkpoint and the summary lines
+//
+// Ctrl-C or SIGTERM during advanceTo ends the step (or coupling window) in progress, writes a
+// checkpoint and throws Interrupted, saying how to resume. An error inside a step throws with the
+// time of the last good checkpoint named. What is written where: solver/Run.hpp.
+#include <memory>
+
+#include "io/CaseConfig.hpp"
+#include "solver/Run.hpp"
+
+namespace qs {
+
+class Simulation {
+public:
+    /// Opens the run. Throws qs::Error, before the earlier output is touched, for a case that
+    /// cannot run (validateRun) or a checkpoint that cannot be resumed from.
+    Simulation(const CaseConfig& config, const RunOptions& options);
+    ~Simulation();
+    Simulation(const Simulation&) = delete;
+    Simulation& operator=(const Simulation&) = delete;
+
+    double time() const;    ///< s
+    double dt() const;      ///< s
+    long steps() const;     ///< since t = 0, the gravity stage excluded
+    int dimension() const;
+    /// The column's measurements now (gate flux, surfaces, ledger...), as series.csv records them.
+    ColumnState state() const;
+
+    /// Advances to time `end` (s; to the step nearest it), writing the outputs and checkpoints
+    /// that fall due on the case's intervals.
+    void advanceTo(double end);
+    /// series.csv's row, the fields and the pipes of now.
+    void writeOutput();
+    /// The checkpoint of now (CASE/OUTPUT/checkpoint.h5), the outputs before it made durable.
+    void writeCheckpoint();
+    /// Writes the last checkpoint and returns (and unless quiet prints) the run's summary.
+    RunSummary finish();
+
+    struct Run;  ///< the run of one grid dimension (Simulation.cpp)
+
+private:
+    std::unique_ptr<Run> run_;
+};
+
+}  // namespace qs
