@@ -5,6 +5,8 @@
 #                                    Google Benchmark, hypre (its AMG is benchmarked against the
 #                                    pressure solvers), Python plotting
 #   bash tools/setup.sh --fuzz       the same plus clang with libFuzzer and OpenMP (tests/fuzz)
+#   bash tools/setup.sh --mpi        the same plus Debian's Open MPI (libopenmpi-dev, mpirun): the
+#                                    build runs on MPI ranks and the mpi tests run
 #   bash tools/setup.sh --openfoam   the same plus Debian's `openfoam` package (OpenFOAM reservoir),
 #                                    its tutorials (`openfoam-examples`)
 #                                    and its headers: the source package of the installed version,
@@ -16,7 +18,7 @@
 # Uses sudo only when not run as root.
 set -euo pipefail
 
-usage() { sed -n '2,15p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,17p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 packages=(cmake g++ make pkg-config libeigen3-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev liblapack-dev
           libgtest-dev libgmock-dev libbenchmark-dev libhypre-dev
@@ -26,8 +28,9 @@ for arg in "$@"; do
     case "$arg" in
         --openfoam) with_openfoam=true ;;
         --fuzz) packages+=(clang libclang-rt-dev libomp-dev) ;;
+        --mpi) packages+=(libopenmpi-dev openmpi-bin) ;;
         -h|--help) usage; exit 0 ;;
-        *) echo "setup.sh: unknown option '$arg' (known: --openfoam, --fuzz, --help)" >&2; exit 2 ;;
+        *) echo "setup.sh: unknown option '$arg' (known: --openfoam, --mpi, --fuzz, --help)" >&2; exit 2 ;;
     esac
 done
 # the OpenFOAM headers come from the source package, checked with the Debian archive keyring:

@@ -14,7 +14,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-bash tools/build.sh --openfoam   # CI runs the OpenFOAM tests too
+bash tools/build.sh --openfoam --mpi   # CI runs the OpenFOAM and the MPI tests too
 
 build_dir="${QUICKSAND_BUILD_DIR:-build}"
 log="$(mktemp)"

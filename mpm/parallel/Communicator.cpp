@@ -1,0 +1,180 @@
+#include "parallel/Communicator.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <numeric>
+#include <string>
+
+#include "core/Error.hpp"
+
+#ifdef QUICKSAND_HAVE_MPI
+#include <mpi.h>
+#endif
+
+namespace qs {
+
+Communicator& Communicator::mutableWorld() {
+    static Communicator world;
+    return world;
+}
+
+const Communicator& Communicator::world() { return mutableWorld(); }
+
+#ifdef QUICKSAND_HAVE_MPI
+
+bool builtWithMpi() { return true; }
+
+std::string mpiLibraryVersion() {
+    char text[MPI_MAX_LIBRARY_VERSION_STRING];
+    int length = 0;
+    MPI_Get_library_version(text, &length);
+    std::string v(text, static_cast<std::size_t>(length));
+    const auto line = v.find_first_of("\n,");  // the first clause: "Open MPI v4.1.4"
+    return line == std::string::npos ? v : v.substr(0, line);
+}
+
+MpiSession::MpiSession(int& argc, char**& argv) {
+    int provided = 0;
+    MPI_Init_thread(&argc, &argv, MPI_THREAD_FUNNELED, &provided);
+    // an error on one rank must reach the code (it is turned into a qs::Error or an abort), not
+    // end the process inside MPI with MPI's own message
+    MPI_Comm_set_errhandler(MPI_COMM_WORLD, MPI_ERRORS_RETURN);
+    Communicator& w = Communicator::mutableWorld();
+    MPI_Comm_rank(MPI_COMM_WORLD, &w.rank_);
+    MPI_Comm_size(MPI_COMM_WORLD, &w.size_);
+}
+
+MpiSession::~MpiSession() {
+    int finalized = 0;
+    MPI_Finalized(&finalized);
+    if (!finalized) MPI_Finalize();
+}
+
+namespace {
+bool active() {
+    int initialized = 0, finalized = 0;
+    MPI_Initialized(&initialized);
+    MPI_Finalized(&finalized);
+    return initialized && !finalized;
+}
+}  // namespace
+
+std::vector<double> Communicator::allGather(double local) const {
+    std::vector<double> all(static_cast<std::size_t>(size_), local);
+    if (size_ > 1) MPI_Allgather(&local, 1, MPI_DOUBLE, all.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD);
+    return all;
+}
+
+double Communicator::sum(double local) const {
+    if (size_ == 1) return local;
+    const std::vector<double> all = allGather(local);
+    // rank order, from zero: the same additions on every rank
+    return std::accumulate(all.begin(), all.end(), 0.0);
+}
+
+long long Communicator::sum(long long local) const {
+    if (size_ == 1) return local;
+    long long total = 0;  // integers: any order gives the same sum
+    MPI_Allreduce(&local, &total, 1, MPI_LONG_LONG, MPI_SUM, MPI_COMM_WORLD);
+    return total;
+}
+
+void Communicator::sumInPlace(std::vector<double>& values) const {
+    if (size_ == 1 || values.empty()) return;
+    const int n = static_cast<int>(values.size());
+    std::vector<double> all(values.size() * static_cast<std::size_t>(size_));
+    MPI_Gather(values.data(), n, MPI_DOUBLE, all.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+    if (rank_ == 0) {
+        std::fill(values.begin(), values.end(), 0.0);
+        for (int r = 0; r < size_; ++r)
+            for (int k = 0; k < n; ++k) values[k] += all[static_cast<std::size_t>(r) * n + k];
+    }
+    MPI_Bcast(values.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
+}
+
+double Communicator::max(double local) const {
+    if (size_ == 1) return local;
+    double m = local;  // max and min are exact in any order
+    MPI_Allreduce(&local, &m, 1, MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+    return m;
+}
+
+double Communicator::min(double local) const {
+    if (size_ == 1) return local;
+    double m = local;
+    MPI_Allreduce(&local, &m, 1, MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+    return m;
+}
+
+bool Communicator::any(bool local) const {
+    if (size_ == 1) return local;
+    int in = local ? 1 : 0, out = 0;
+    MPI_Allreduce(&in, &out, 1, MPI_INT, MPI_LOR, MPI_COMM_WORLD);
+    return out != 0;
+}
+
+std::string Communicator::broadcast(const std::string& text, int root) const {
+    if (size_ == 1) return text;
+    long long length = rank_ == root ? static_cast<long long>(text.size()) : 0;
+    MPI_Bcast(&length, 1, MPI_LONG_LONG, root, MPI_COMM_WORLD);
+    std::string out = rank_ == root ? text : std::string(static_cast<std::size_t>(length), '\0');
+    MPI_Bcast(out.data(), static_cast<int>(length), MPI_CHAR, root, MPI_COMM_WORLD);
+    return out;
+}
+
+void Communicator::barrier() const {
+    if (size_ > 1) MPI_Barrier(MPI_COMM_WORLD);
+}
+
+void Communicator::exchange(const std::vector<int>& neighbours, const std::vector<std::vector<double>>& send,
+                            std::vector<std::vector<double>>& recv) const {
+    const std::size_t n = neighbours.size();
+    if (n == 0) return;
+    requests_.resize(2 * n * sizeof(MPI_Request));
+    auto* requests = reinterpret_cast<MPI_Request*>(requests_.data());
+    constexpr int kTag = 41;
+    for (std::size_t k = 0; k < n; ++k)
+        MPI_Irecv(recv[k].data(), static_cast<int>(recv[k].size()), MPI_DOUBLE, neighbours[k], kTag, MPI_COMM_WORLD,
+                  &requests[k]);
+    for (std::size_t k = 0; k < n; ++k)
+        MPI_Isend(send[k].data(), static_cast<int>(send[k].size()), MPI_DOUBLE, neighbours[k], kTag, MPI_COMM_WORLD,
+                  &requests[n + k]);
+    const int failed = MPI_Waitall(static_cast<int>(2 * n), requests, MPI_STATUSES_IGNORE);
+    if (failed != MPI_SUCCESS) {
+        char text[MPI_MAX_ERROR_STRING];
+        int length = 0;
+        MPI_Error_string(failed, text, &length);
+        throw Error("rank " + std::to_string(rank_) + ": an exchange with the neighbouring ranks failed: " +
+                    std::string(text, static_cast<std::size_t>(length)));
+    }
+}
+
+void Communicator::abort(int code) const {
+    if (active()) MPI_Abort(MPI_COMM_WORLD, code);
+    std::_Exit(code);
+}
+
+#else  // built without MPI: one rank
+
+bool builtWithMpi() { return false; }
+std::string mpiLibraryVersion() { return "none"; }
+MpiSession::MpiSession(int&, char**&) {}
+MpiSession::~MpiSession() = default;
+std::vector<double> Communicator::allGather(double local) const { return {local}; }
+double Communicator::sum(double local) const { return local; }
+long long Communicator::sum(long long local) const { return local; }
+void Communicator::sumInPlace(std::vector<double>&) const {}
+double Communicator::max(double local) const { return local; }
+double Communicator::min(double local) const { return local; }
+bool Communicator::any(bool local) const { return local; }
+std::string Communicator::broadcast(const std::string& text, int) const { return text; }
+void Communicator::barrier() const {}
+void Communicator::exchange(const std::vector<int>& neighbours, const std::vector<std::vector<double>>&,
+                            std::vector<std::vector<double>>&) const {
+    QS_CHECK(neighbours.empty(), "an exchange with other ranks in a build without MPI");
+}
+void Communicator::abort(int code) const { std::_Exit(code); }
+
+#endif
+
+}  // namespace qs

@@ -1,0 +1,84 @@
+# `quicksand` under mpirun (run by ctest as `cmake -P`, label mpi):
+#  1. `check` on 2 ranks prints the report and the decomposition once, not once per rank;
+#  2. a bad case on 2 ranks is refused once, naming file and key, with exit code 1;
+#  3. `run` on 2 ranks, which cannot yet step a decomposed column, is refused once, within the
+#     timeout (no rank waits for another), and leaves an earlier output/ untouched;
+#  4. `check --ranks N` plans a decomposition without mpirun, and refuses more ranks than cells;
+#  5. `--version` names the MPI library.
+# MPIEXEC: mpirun with its flags (--oversubscribe: more ranks than the 2 cores).
+separate_arguments(mpiexec UNIX_COMMAND "${MPIEXEC}")
+set(piping "${SOURCE_DIR}/cases/piping2D")
+
+function(count_matches text pattern out)
+  string(REGEX MATCHALL "${pattern}" found "${text}")
+  list(LENGTH found n)
+  set(${out} ${n} PARENT_SCOPE)
+endfunction()
+
+# 1.
+execute_process(COMMAND ${mpiexec} -np 2 "${QUICKSAND}" check "${piping}"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "mpirun -np 2 quicksand check failed (${rc}):\n${out}\n${err}")
+endif()
+count_matches("${out}" "case OK" ok)
+count_matches("${out}" "decomposition: 2 ranks, 2 x 1 blocks \\(columns whole\\)" plans)
+if(NOT ok EQUAL 1 OR NOT plans EQUAL 1)
+  message(FATAL_ERROR "check on 2 ranks printed 'case OK' ${ok} times and the decomposition ${plans} times, "
+                      "expected once each:\n${out}")
+endif()
+
+# 2.
+file(REMOVE_RECURSE "${WORK_DIR}")
+file(MAKE_DIRECTORY "${WORK_DIR}/bad/output")
+file(WRITE "${WORK_DIR}/bad/output/series.csv" "earlier results\n")
+file(READ "${SOURCE_DIR}/cases/verification/geostatic/case.toml" good)
+string(REPLACE "porosity = 0.38" "porosity = 1.38" bad "${good}")
+file(WRITE "${WORK_DIR}/bad/case.toml" "${bad}")
+foreach(cmd check run)
+  execute_process(COMMAND ${mpiexec} -np 2 "${QUICKSAND}" ${cmd} "${WORK_DIR}/bad"
+                  RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+  if(rc EQUAL 0 OR NOT rc MATCHES "^[0-9]+$")
+    message(FATAL_ERROR "mpirun -np 2 quicksand ${cmd} of porosity 1.38: exit ${rc}, expected 1:\n${err}")
+  endif()
+  count_matches("${err}" "case.toml:[0-9]+: key 'materials\\.[a-z_]+\\.porosity'" said)
+  if(NOT said EQUAL 1)
+    message(FATAL_ERROR "quicksand ${cmd} on 2 ranks said the error ${said} times, expected once:\n${err}")
+  endif()
+endforeach()
+
+# 3.
+file(MAKE_DIRECTORY "${WORK_DIR}/good/output")
+file(WRITE "${WORK_DIR}/good/output/series.csv" "earlier results\n")
+file(WRITE "${WORK_DIR}/good/case.toml" "${good}")
+execute_process(COMMAND ${mpiexec} -np 2 "${QUICKSAND}" run "${WORK_DIR}/good"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+if(NOT rc EQUAL 1)
+  message(FATAL_ERROR "mpirun -np 2 quicksand run: exit ${rc}, expected 1 (refused):\n${out}\n${err}")
+endif()
+count_matches("${err}" "not built yet" said)
+if(NOT said EQUAL 1)
+  message(FATAL_ERROR "run on 2 ranks said its refusal ${said} times, expected once:\n${err}")
+endif()
+file(READ "${WORK_DIR}/good/output/series.csv" kept)
+if(NOT kept STREQUAL "earlier results\n")
+  message(FATAL_ERROR "a refused run on 2 ranks touched the earlier output/")
+endif()
+
+# 4.
+execute_process(COMMAND "${QUICKSAND}" check "${piping}" --ranks 3
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "decomposition: 3 ranks, 3 x 1 blocks \\(columns whole\\)")
+  message(FATAL_ERROR "quicksand check --ranks 3 (${rc}):\n${out}\n${err}")
+endif()
+execute_process(COMMAND "${QUICKSAND}" check "${piping}" --ranks 1000
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+if(NOT rc EQUAL 1 OR NOT err MATCHES "piping2D/case.toml: the grid of 13 x 49 cells .* cannot be cut into 1000 blocks")
+  message(FATAL_ERROR "quicksand check --ranks 1000 of 13 x 49 cells (${rc}):\n${out}\n${err}")
+endif()
+
+# 5.
+execute_process(COMMAND "${QUICKSAND}" --version RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "MPI: +Open MPI")
+  message(FATAL_ERROR "quicksand --version does not name the MPI library (${rc}):\n${out}\n${err}")
+endif()
