@@ -68,15 +68,23 @@ bool builtWithMpi();
 /// The MPI library's own version line ("Open MPI v4.1.4, ..."), or "none".
 std::string mpiLibraryVersion();
 
-/// MPI's lifetime in main(): initialises MPI (threads funnelled: only the thread that calls MPI
-/// runs the OpenMP regions' master) when the build has it, and finalises it at the end. Without
-/// mpirun, Open MPI's singleton start makes this one rank.
+/// Whether an MPI launcher started this process (mpirun, srun with PMIx or PMI-2, MPICH's
+/// Hydra): the environment it sets (OMPI_COMM_WORLD_SIZE, PMIX_RANK, PMI_RANK, PMI_SIZE).
+bool launchedByMpi();
+
+/// MPI's lifetime in main(): when the build has MPI and a launcher started the process
+/// (launchedByMpi), initialises MPI (threads funnelled: only the thread that calls MPI runs the
+/// OpenMP regions' master) and finalises it at the end. Started without one, the process is one
+/// rank and MPI is never initialised.
 class MpiSession {
 public:
     MpiSession(int& argc, char**& argv);
     ~MpiSession();
     MpiSession(const MpiSession&) = delete;
     MpiSession& operator=(const MpiSession&) = delete;
+
+private:
+    bool initialized_ = false;
 };
 
 }  // namespace qs
