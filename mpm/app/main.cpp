@@ -121,8 +121,10 @@ int main(int argc, char** argv) {
             qs::printCheckReport(config, report);
             const qs::Decomposition d = qs::decompose(config, ranks);
             if (ranks > 1) report << qs::describe(d);
-        } catch (const std::exception& e) {
+        } catch (const qs::Error& e) {
             failure = e.what();
+        } catch (const std::exception& e) {
+            failure = std::string("internal error: ") + e.what();
         }
         if (reportOnce(failure, !failure.empty())) return 1;
         if (world.rank() == 0) std::cout << report.str();

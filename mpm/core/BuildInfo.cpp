@@ -19,6 +19,29 @@ std::string buildCommit() { return QUICKSAND_COMMIT; }
 
 std::string openFoamBuildVersion() { return QUICKSAND_OPENFOAM_BUILD; }
 
+namespace {
+std::string hdf5Version() {
+    unsigned major = 0, minor = 0, release = 0;
+    H5get_libversion(&major, &minor, &release);
+    return std::to_string(major) + "." + std::to_string(minor) + "." + std::to_string(release);
+}
+}  // namespace
+
+std::string buildLine() {
+    std::ostringstream s;
+    s << "quicksand " << version() << " (commit " << buildCommit() << ", " << QUICKSAND_BUILD_TYPE << "; ";
+    const std::string foam = openFoamBuildVersion();
+    s << (foam.rfind("none", 0) == 0 ? "no OpenFOAM" : foam.substr(0, foam.find(" (")));
+    s << ", " << (builtWithMpi() ? mpiLibraryVersion() : std::string("no MPI"));
+#ifdef _OPENMP
+    s << ", OpenMP " << _OPENMP;
+#else
+    s << ", no OpenMP";
+#endif
+    s << ", HDF5 " << hdf5Version() << ")";
+    return s.str();
+}
+
 std::string versionText() {
     std::ostringstream s;
     s << "quicksand " << version() << " (commit " << buildCommit() << ", " << QUICKSAND_BUILD_TYPE << ")\n";
@@ -29,9 +52,7 @@ std::string versionText() {
 #else
     s << "  OpenMP:   none\n";
 #endif
-    unsigned major = 0, minor = 0, release = 0;
-    H5get_libversion(&major, &minor, &release);
-    s << "  HDF5:     " << major << "." << minor << "." << release << "\n";
+    s << "  HDF5:     " << hdf5Version() << "\n";
     return s.str();
 }
 

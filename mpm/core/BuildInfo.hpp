@@ -13,5 +13,9 @@ std::string buildCommit();
 std::string openFoamBuildVersion();
 /// Several lines: the version and commit, then each option with its version.
 std::string versionText();
+/// The same in one line, for the head of a run's output and fields.h5's attribute `quicksand`:
+/// "quicksand 0.1.0 (commit 401c27d07a80, Release; OpenFOAM v1912, Open MPI v4.1.4, OpenMP
+/// 201511, HDF5 1.10.8)".
+std::string buildLine();
 
 }  // namespace qs

@@ -65,6 +65,13 @@ public:
     Index cells(int d) const { return cells_[d]; }
     Index nodes(int d) const { return nodes_[d]; }
     Index cellStride(int d) const { return cellStride_[d]; }
+    /// The cells as columns along the vertical (the last axis): columns() of them, cells(D - 1)
+    /// rows each; columnCell(k, row) is column k's cell in that row. The per-column scans (which
+    /// cells' water is under the air, the sand's top cells and surface) run down one column at a
+    /// time through these. Over MPI ranks each rank's block holds whole columns
+    /// (parallel/Decomposition.hpp), so no scan crosses a rank.
+    Index columns() const { return cellStride_[D - 1]; }
+    Index columnCell(Index column, Index row) const { return column + row * cellStride_[D - 1]; }
     Index nodeStride(int d) const { return nodeStride_[d]; }
     /// m (2D), m2 (1D) or 1 (3D): the extent normal to the grid at radius r = x_0, by which a
     /// length (2D) or a point (1D) becomes an area and an area (2D) a volume: the out-of-plane

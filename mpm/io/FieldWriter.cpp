@@ -5,6 +5,7 @@
 
 #include <cerrno>
 
+#include "core/BuildInfo.hpp"
 #include "core/Error.hpp"
 #include "io/Hdf5File.hpp"
 
@@ -178,6 +179,8 @@ void FieldWriter::Impl::writeDimensionAttribute(hid_t file, const std::string& p
                          H5Aclose);
     if (!space.valid() || !attribute.valid() || H5Awrite(attribute.get(), H5T_NATIVE_INT, &dimension) < 0)
         fail(path, "write attribute /@dimension");
+    // which build wrote the file (core/BuildInfo.hpp): a bug report's first question
+    writeStringAttribute(file, "/", "quicksand", buildLine());
 }
 
 void FieldWriter::Impl::writeDataset(hid_t group, const std::string& groupPath, const std::string& name,

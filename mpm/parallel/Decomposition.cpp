@@ -176,12 +176,13 @@ int ghostLayersOf(const CaseConfig& config) {
 
 [[noreturn]] void cannotCut(const CaseConfig& config, const std::array<Index, 3>& cells, const std::string& into) {
     const int D = config.grid.dimension, ghostLayers = ghostLayersOf(config);
-    std::ostringstream grid;
-    for (int a = 0; a < D; ++a) grid << (a ? " x " : "") << cells[a];
-    throw Error(config.caseDirectory + "/case.toml: the grid of " + grid.str() + " cells (grid.cell_size = " +
-                std::to_string(config.grid.cellSize) + " m) cannot be cut into " + into + " of at least " +
-                std::to_string(ghostLayers + 1) + " cells along each cut axis (" + std::to_string(ghostLayers) +
-                " ghost layer" + (ghostLayers > 1 ? "s" : "") + " beside each cut): run on fewer ranks, or on a finer grid");
+    std::ostringstream m;
+    m << config.caseDirectory << "/case.toml: the grid of ";
+    for (int a = 0; a < D; ++a) m << (a ? " x " : "") << cells[a];
+    m << " cells (grid.cell_size = " << config.grid.cellSize << " m) cannot be cut into " << into << " of at least "
+      << ghostLayers + 1 << " cells along each cut axis (" << ghostLayers << " ghost layer" << (ghostLayers > 1 ? "s" : "")
+      << " beside each cut): run on fewer ranks, or on a finer grid";
+    throw Error(m.str());
 }
 
 }  // namespace

@@ -11,7 +11,11 @@
 // arrivals are appended in the senders' rank order, each sender's in its own order, so the same
 // N gives the same point order, run after run. A point can only have moved into a neighbour's
 // block (a step moves none further than a cell: the health check); one found beyond stops the
-// run, naming it.
+// run, naming it. A point's cell is found as the Grid finds it (x times 1/h, Grid::cellAlong),
+// so that a point on a cut face is filed in the same cell by the rank it goes to. Per-point
+// scratch outside the registry (shape-function caches, the stress return's code) is not carried:
+// it is stale after a migration until the step rebuilds it (sortPoints), and must be resized
+// before anything reads it.
 #include <cmath>
 #include <string>
 #include <vector>
@@ -32,7 +36,7 @@ template <int D>
 class PointMigration {
 public:
     PointMigration(const Subdomain<D>& mine, const std::vector<int>& neighbours, Real h)
-        : mine_(mine), neighbours_(neighbours), h_(h), send_(neighbours.size()), recv_(neighbours.size()),
+        : mine_(mine), neighbours_(neighbours), invH_(1 / h), send_(neighbours.size()), recv_(neighbours.size()),
           countsOut_(neighbours.size(), std::vector<double>(1)), countsIn_(neighbours.size(), std::vector<double>(1)) {}
 
     template <class Set>
@@ -73,7 +77,7 @@ private:
     IVec<D> cellOf(const Real* x) const {
         IVec<D> k;
         for (int a = 0; a < D; ++a) {
-            const Real u = x[a] / h_;
+            const Real u = x[a] * invH_;  // as Grid::cellAlong: the same cell on every rank
             const Index last = mine_.globalCells()[a] - 1;
             k[a] = !(u >= 0) ? 0 : (u >= static_cast<Real>(last) ? last : static_cast<Index>(u));
         }
@@ -113,7 +117,7 @@ private:
 
     const Subdomain<D>& mine_;
     std::vector<int> neighbours_;
-    Real h_;
+    Real invH_;
     std::vector<std::vector<double>> send_, recv_, countsOut_, countsIn_;
     std::vector<char> drop_;
 };

@@ -236,7 +236,7 @@ SandCells DoublePointSolver<D>::sandCells() const {
     const Index columns = s.columns();
     s.baseFlux.assign(columns, 0.0);
     for (Index k = 0; k < columns; ++k) {
-        const Index c = sandBottomRow_ * columns + k;
+        const Index c = grid_.columnCell(k, sandBottomRow_);
         Real q = 0, weight = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
             if ((corner >> (D - 1)) & 1) return;  // an upper node

@@ -69,10 +69,10 @@ void DoublePointSolver<D>::classifyCells() {
     // under a water-starved cell inside piping2D's bed vented, and so did a starved sand cell by
     // the wall: it held p = 0 while its neighbours rose to 70 kPa, and a solid point left at
     // 726 m/s (13.38 s).
-    forAll(up, [&](Index column) {
+    forAll(grid_.columns(), [&](Index column) {
         bool sandAbove = false;
         for (Index row = rows; row-- > 0;) {
-            const Index c = column + row * up;
+            const Index c = grid_.columnCell(column, row);
             const bool holdsSand = cells_.hasSolid(c);
             const bool overflowRow = row + 1 == overflowRow_;
             sandAbove = sandAbove || holdsSand;

@@ -341,10 +341,9 @@ void DoublePointSolver<D>::measureSandPorosity() {
     // the second cell), so a packed bed rising as a plug, or the top of a suspension, keeps its
     // porosity up to its surface.
     const Index up = grid_.cellStride(D - 1), rows = grid_.cells(D - 1);
-    const Index columns = grid_.numCells() / rows;
-    forAll(columns, [&](Index col) {
+    forAll(grid_.columns(), [&](Index col) {
         for (Index row = rows - 1; row >= 2; --row) {
-            const Index top = col + row * up;
+            const Index top = grid_.columnCell(col, row);
             if (!cells_.hasSolid(top)) continue;
             const Index below = top - up, base = below - up;
             if (!cells_.hasSolid(below) || !cells_.hasSolid(base)) break;

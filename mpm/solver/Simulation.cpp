@@ -9,6 +9,7 @@
 #include <optional>
 #include <sstream>
 
+#include "core/BuildInfo.hpp"
 #include "core/Error.hpp"
 #include "io/Checkpoint.hpp"
 #include "io/FieldWriter.hpp"
@@ -260,6 +261,7 @@ void RunOf<D>::printHeader() {
         couplingLog_ << "# " << model_->name() << (model_->description().empty() ? "" : ": " + model_->description())
                      << (options_.resume ? " (resumed)" : "") << "\n";
     if (options_.quiet) return;
+    std::printf("%s\n", buildLine().c_str());
     const DoublePointSolver<D>& s = *solver_;
     const bool semi = s.scheme() == TimeScheme::SemiImplicit;
     std::printf("quicksand: %dD, %s, dt = %.3g s (%s = %.1f m/s), %zu solid + %zu liquid points, t = %.4g -> %.4g s%s\n",

@@ -46,17 +46,28 @@ std::string entryName(const CheckpointData& data, const std::string& set, const 
     return data.has(numbered) ? numbered : name;
 }
 
-/// Every field of the registry from its entry. A field the registry dates (FieldSpec::since)
-/// may be missing, in a checkpoint written before it existed: it starts at zero.
+/// The day checkpoints began to name their entries (the field registry).
+constexpr const char* kRegistryDate = "2026-12-07";
+
+/// Whether a checkpoint may lack field f: f is dated (FieldSpec::since), and the checkpoint was
+/// written before that date. One that names its entries was written on the registry's date or
+/// later, so it lacks a field dated before that only if it is damaged.
+bool mayLack(const FieldSpec& f, bool named) {
+    return f.since && (!named || std::string(f.since) >= kRegistryDate);
+}
+
+/// Every field of the registry from its entry. A field the checkpoint may lack (mayLack) starts
+/// at zero when it does.
 template <class Set>
 void getSet(const CheckpointData& data, const std::string& set, Set& points, int dimension) {
     int k = 0;
     std::size_t count = 0;
+    const bool named = data.has(set + "/position");
     points.forEachField([&](auto& field, const FieldSpec& f) {
         using T = typename std::decay_t<decltype(field)>::value_type;
         const std::string name = entryName(data, set, f, k++);
         const std::size_t components = static_cast<std::size_t>(f.components);
-        if (f.since && !data.has(name)) {
+        if (mayLack(f, named) && !data.has(name)) {
             field.assign(count * components, T{});
             return;
         }
@@ -130,13 +141,16 @@ void putGridFields(CheckpointData& data, const std::string& grid, const Fields& 
 }
 
 /// The grid's carried fields from GRID/NAME, or from NAME in a checkpoint written before the
-/// registry (2026-12-07). A field the registry dates starts at zero from an older checkpoint.
+/// registry (2026-12-07). A field the checkpoint may lack (mayLack) starts at zero when it does.
 template <class Fields>
 void getGridFields(const CheckpointData& data, const std::string& grid, Fields& fields) {
+    const bool named = data.has("solid/position");  // the registry's names (getSet)
     fields.forEachStateField([&](std::vector<Real>& field, const FieldSpec& f) {
         std::string name = grid + "/" + f.name;
+        QS_CHECK(!(data.has(name) && data.has(f.name)),
+                 "entries '" << name << "' and '" << f.name << "' are one field written twice" << kNotThisCase);
         if (!data.has(name) && data.has(f.name)) name = f.name;
-        if (f.since && !data.has(name)) {
+        if (mayLack(f, named) && !data.has(name)) {
             std::fill(field.begin(), field.end(), 0.0);
             return;
         }

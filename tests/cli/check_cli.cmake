@@ -37,6 +37,22 @@ if(NOT kept STREQUAL "earlier results\n")
   message(FATAL_ERROR "a failed run touched the earlier output/")
 endif()
 
+# --version: the version and commit, then each build option; a run's first line names the build
+execute_process(COMMAND "${QUICKSAND}" --version RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+foreach(expected "^quicksand [0-9]+\\.[0-9]+\\.[0-9]+ \\(commit " "\n  OpenFOAM: " "\n  MPI: +(Open MPI|none)"
+                 "\n  OpenMP: " "\n  HDF5: +1\\.")
+  if(NOT rc EQUAL 0 OR NOT out MATCHES "${expected}")
+    message(FATAL_ERROR "quicksand --version (${rc}) does not say '${expected}':\n${out}\n${err}")
+  endif()
+endforeach()
+file(MAKE_DIRECTORY "${WORK_DIR}/version")
+file(WRITE "${WORK_DIR}/version/case.toml" "${good}")
+execute_process(COMMAND "${QUICKSAND}" run "${WORK_DIR}/version" --set time.end=0.001 --set output.fields=false
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
+if(NOT rc EQUAL 0 OR NOT out MATCHES "^quicksand [0-9]+\\.[0-9]+\\.[0-9]+ \\(commit [^;]+; [^)]*HDF5 1\\.[0-9.]+\\)\n")
+  message(FATAL_ERROR "a run's first line does not name the build (${rc}):\n${out}\n${err}")
+endif()
+
 # 4. sizing
 execute_process(COMMAND "${QUICKSAND}" check "${SOURCE_DIR}/cases/deltaresColumnLumped" RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err)
 foreach(expected "size: [0-9]+ cells, [0-9]+ nodes, [0-9]+ solid \\+ [0-9]+ liquid points" "[0-9]+ steps"

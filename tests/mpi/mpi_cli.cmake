@@ -4,7 +4,8 @@
 #  3. `run` on 2 ranks, which cannot yet step a decomposed column, is refused once, within the
 #     timeout (no rank waits for another), and leaves an earlier output/ untouched;
 #  4. `check --ranks N` plans a decomposition without mpirun, and refuses more ranks than cells;
-#  5. `--version` names the MPI library.
+#  5. `--version` names the MPI library;
+#  6. more ranks than the grid has columns for, under mpirun: refused once, naming the file.
 # MPIEXEC: mpirun with its flags (--oversubscribe: more ranks than the 2 cores).
 separate_arguments(mpiexec UNIX_COMMAND "${MPIEXEC}")
 set(piping "${SOURCE_DIR}/cases/piping2D")
@@ -81,4 +82,12 @@ endif()
 execute_process(COMMAND "${QUICKSAND}" --version RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 60)
 if(NOT rc EQUAL 0 OR NOT out MATCHES "MPI: +Open MPI")
   message(FATAL_ERROR "quicksand --version does not name the MPI library (${rc}):\n${out}\n${err}")
+endif()
+
+# 6.
+execute_process(COMMAND ${mpiexec} -np 3 "${QUICKSAND}" check "${piping}" --set grid.width=0.0248
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+count_matches("${err}" "piping2D/case.toml: the grid of 4 x 49 cells .* cannot be cut into 3 blocks" said)
+if(NOT rc EQUAL 1 OR NOT said EQUAL 1)
+  message(FATAL_ERROR "mpirun -np 3 quicksand check of 4 columns: exit ${rc}, said ${said} times, expected 1 and once:\n${out}\n${err}")
 endif()

@@ -23,8 +23,12 @@ namespace {
 /// piping2D on 2 or 3 ranks, piping3D on 4 (2 x 2 blocks of whole columns).
 int dimensionForRanks() { return Communicator::world().size() >= 4 ? 3 : 2; }
 
-CaseConfig caseForRanks() {
-    return loadCase(std::string(QUICKSAND_SOURCE_DIR) + (dimensionForRanks() == 3 ? "/cases/piping3D" : "/cases/piping2D"));
+/// With uGIMP the decomposition keeps two ghost layers, as its stencil reaches a cell further.
+CaseConfig caseForRanks(bool gimp = false) {
+    std::vector<CaseOverride> overrides;
+    if (gimp) overrides.push_back(parseOverride("grid.shape_functions=\"gimp\""));
+    return loadCase(std::string(QUICKSAND_SOURCE_DIR) + (dimensionForRanks() == 3 ? "/cases/piping3D" : "/cases/piping2D"),
+                    overrides);
 }
 
 /// A cell corner's share, a value whose sums depend on their order.
@@ -44,9 +48,10 @@ Index cellIndex(const IVec<D>& c, const IVec<D>& cells) {
 }
 
 /// Rank r's shares at the nodes of local grid `on` (zero where r scatters nothing), in the
-/// order r adds them: its owned cells in global order, their corners in order.
+/// order r adds them: its owned cells in global order, their corners in order; with reach 1 the
+/// corners of the cells beside them too (uGIMP's stencil).
 template <int D>
-std::vector<double> partialOf(const Decomposition& d, int r, const Subdomain<D>& on, int components) {
+std::vector<double> partialOf(const Decomposition& d, int r, const Subdomain<D>& on, int components, int reach = 0) {
     const Subdomain<D> theirs(d, r);
     std::vector<double> field(static_cast<std::size_t>(on.localNodes() * components), 0.0);
     const IVec<D>& cells = on.globalCells();
@@ -55,9 +60,17 @@ std::vector<double> partialOf(const Decomposition& d, int r, const Subdomain<D>&
     for (Index k = 0; k < count; ++k) {
         const IVec<D> c = cellCoords<D>(k, cells);
         if (!theirs.ownsCell(c)) continue;
-        for (int corner = 0; corner < (1 << D); ++corner) {
+        const int width = 2 + 2 * reach;  // nodes per axis the cell's points reach
+        int stencil = 1;
+        for (int a = 0; a < D; ++a) stencil *= width;
+        for (int corner = 0; corner < stencil; ++corner) {
             IVec<D> n = c;
-            for (int a = 0; a < D; ++a) n[a] += (corner >> a) & 1;
+            bool inside = true;
+            for (int a = 0, rest = corner; a < D; ++a, rest /= width) {
+                n[a] += rest % width - reach;
+                inside = inside && n[a] >= 0 && n[a] <= cells[a];
+            }
+            if (!inside) continue;
             const Index local = on.localNode(n);
             if (local < 0) continue;
             for (int comp = 0; comp < components; ++comp) field[local * components + comp] += share(k, corner, comp);
@@ -73,21 +86,23 @@ std::uint64_t bits(double x) {
 }
 
 template <int D>
-void checkSumShared() {
+void checkSumShared(bool gimp) {
     const Communicator& world = Communicator::world();
-    const CaseConfig c = caseForRanks();
+    const CaseConfig c = caseForRanks(gimp);
     const Decomposition d = decompose(c, world.size());
+    ASSERT_EQ(d.ghostLayers, gimp ? 2 : 1);
+    const int reach = gimp ? 1 : 0;
     const Subdomain<D> mine(d, world.rank());
     Halo<D> halo(d, mine, world);
     ASSERT_FALSE(halo.neighbours().empty());
     constexpr int kComponents = 2;
-    std::vector<double> field = partialOf<D>(d, world.rank(), mine, kComponents);
+    std::vector<double> field = partialOf<D>(d, world.rank(), mine, kComponents, reach);
     halo.sumShared(field, kComponents);
     // every node of the local grid: the holders' shares added in rank order (a rank that does not
     // hold the node adds zero), so all holders agree to the bit
     std::vector<double> expected(field.size(), 0.0);
     for (int r = 0; r < world.size(); ++r) {
-        const std::vector<double> p = partialOf<D>(d, r, mine, kComponents);
+        const std::vector<double> p = partialOf<D>(d, r, mine, kComponents, reach);
         for (std::size_t i = 0; i < p.size(); ++i) expected[i] += p[i];
     }
     int wrong = 0;
@@ -98,7 +113,7 @@ void checkSumShared() {
     EXPECT_EQ(wrong, 0);
     EXPECT_GT(halo.sharedNodes(), 0u);
     // the shared nodes were summed, not left as this rank's shares: some differ from them
-    const std::vector<double> own = partialOf<D>(d, world.rank(), mine, kComponents);
+    const std::vector<double> own = partialOf<D>(d, world.rank(), mine, kComponents, reach);
     std::size_t changed = 0;
     for (std::size_t i = 0; i < field.size(); ++i) changed += field[i] != own[i];
     EXPECT_GT(changed, 0u);
@@ -163,6 +178,8 @@ void checkMigration(Set& set) {
         for (int a = 0; a < D; ++a) {
             double x = (double(cell[a]) + 0.25 + 0.5 * (id % 2)) * h;
             if (a < D - 1) x += (double((id * 7919) % 3) - 1) * 0.9 * h;  // sideways only: whole columns
+            // one point in five on a cell face, fl(c h): where x / h and x (1 / h) may differ
+            if (a < D - 1 && id % 5 == 0) x = double(cell[a] + (id % 2)) * h;
             set.x[p * D + a] = std::min(std::max(x, 0.0), double(cells[a]) * h);
         }
     }
@@ -176,8 +193,8 @@ void checkMigration(Set& set) {
         const long long id = static_cast<long long>(set.v[p * D]);
         after += id;
         IVec<D> cell;
-        for (int a = 0; a < D; ++a)
-            cell[a] = std::min<Index>(static_cast<Index>(set.x[p * D + a] / h), cells[a] - 1);
+        for (int a = 0; a < D; ++a)  // as the grid files it (Grid::cellAlong: x times 1/h)
+            cell[a] = std::min<Index>(static_cast<Index>(set.x[p * D + a] * (1 / h)), cells[a] - 1);
         ASSERT_TRUE(mine.ownsCell(cell)) << "rank " << world.rank() << " holds point " << id << " of another's cell";
         int f = 0;
         set.forEachField([&](auto& field, const FieldSpec& spec) {
@@ -199,8 +216,14 @@ void checkMigration(Set& set) {
 }  // namespace
 
 TEST(Halo, SharedNodesAreSummedInRankOrderByEveryHolder) {
-    if (dimensionForRanks() == 3) checkSumShared<3>();
-    else checkSumShared<2>();
+    if (dimensionForRanks() == 3) checkSumShared<3>(false);
+    else checkSumShared<2>(false);
+}
+
+// uGIMP: two ghost layers, and each cell's points reach the nodes of the cells beside it
+TEST(Halo, TheWiderGimpStencilIsSummedToo) {
+    if (dimensionForRanks() == 3) checkSumShared<3>(true);
+    else checkSumShared<2>(true);
 }
 
 TEST(Halo, GhostNodesTakeTheirOwnersValues) {

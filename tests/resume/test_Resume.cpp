@@ -311,7 +311,8 @@ TEST(Resume, ACheckpointWrittenBeforeAPICStillLoads) {
     double largest = 0;
     for (double value : solver.solid().velocityGradient) largest = std::max(largest, std::abs(value));
     ASSERT_GT(largest, 0.0) << "the column is not moving: C would be zero whether saved or not";
-    const CheckpointData older = without(now, "solid/velocity_gradient");
+    // as such a checkpoint was: numbered entries (before the field registry), no solid_field9
+    const CheckpointData older = without(renamed(now, numberedName), "solid_field9");
     const auto r1 = makeReservoirModel(c);
     DoublePointSolver<1> fromOlder(c, *r1);
     ASSERT_NO_THROW(fromOlder.loadState(older));
@@ -322,6 +323,10 @@ TEST(Resume, ACheckpointWrittenBeforeAPICStillLoads) {
     DoublePointSolver<1> fromNow(c, *r2);
     fromNow.loadState(now);
     EXPECT_EQ(fromNow.solid().velocityGradient, solver.solid().velocityGradient);
+    // a checkpoint that names its entries was written after C existed: without it, it is damaged
+    const auto r3 = makeReservoirModel(c);
+    DoublePointSolver<1> fromDamaged(c, *r3);
+    EXPECT_THROW(fromDamaged.loadState(without(now, "solid/velocity_gradient")), Error);
 }
 
 // Checkpoints written before the field registry numbered the point fields (solid_field0..9,
@@ -338,11 +343,20 @@ TEST(Resume, ACheckpointWrittenBeforeTheFieldRegistryStillLoads) {
     CheckpointData now;
     solver.saveState(now);
     int listed = 0;
-    solver.solid().forEachField([&](const auto&, const FieldSpec& f) {
-        EXPECT_NE(numberedName(std::string("solid/") + f.name), std::string("solid/") + f.name) << f.name;
+    auto known = [&](const std::string& set, const FieldSpec& f) {
+        EXPECT_NE(numberedName(set + "/" + f.name), set + "/" + f.name) << set << "/" << f.name;
         ++listed;
-    });
-    EXPECT_EQ(listed, 10);
+    };
+    solver.solid().forEachField([&](const auto&, const FieldSpec& f) { known("solid", f); });
+    solver.liquid().forEachField([&](const auto&, const FieldSpec& f) { known("liquid", f); });
+    EXPECT_EQ(listed, 17);
+    // the dated fields non-zero, so that reading them as missing (zeros) would show: the cells'
+    // pressure gradient from the consolidation, a cavity put in by hand
+    const std::vector<double>& gradient = now.doubles("cells/pressure_gradient");
+    ASSERT_TRUE(std::any_of(gradient.begin(), gradient.end(), [](double g) { return g != 0; }));
+    std::vector<double> cavity = now.doubles("liquid/cavity");
+    for (std::size_t p = 0; p < cavity.size(); p += 3) cavity[p] = 1e-6 * double(p + 1);
+    now.put("liquid/cavity", cavity);
     const CheckpointData older = renamed(now, numberedName);
     ASSERT_FALSE(older.has("solid/position"));
     ASSERT_TRUE(older.has("solid_field9") && older.has("liquid_field6") && older.has("pressure_gradient"));
@@ -369,18 +383,23 @@ TEST(Resume, ACheckpointWrittenBeforeTheFieldRegistryStillLoads) {
         }
     }
 
-    // one field under both names is refused, not read from either
-    CheckpointData both = now;
-    both.put("liquid_field1", now.doubles("liquid/velocity"));
-    const auto r3 = makeReservoirModel(c);
-    DoublePointSolver<1> twice(c, *r3);
-    try {
-        twice.loadState(both);
-        FAIL() << "a field written twice was accepted";
-    } catch (const Error& e) {
-        EXPECT_NE(std::string(e.what()).find("'liquid/velocity' and 'liquid_field1' are one field written twice"),
-                  std::string::npos)
-            << e.what();
+    EXPECT_EQ(fromOlder.liquid().cavity, fromNow.liquid().cavity);
+
+    // one field under both names is refused, not read from either: a point field, a grid field
+    for (const auto& [named, numbered] : {std::pair<std::string, std::string>{"liquid/velocity", "liquid_field1"},
+                                          {"cells/pressure_gradient", "pressure_gradient"}}) {
+        CheckpointData both = now;
+        both.put(numbered, now.doubles(named));
+        const auto r3 = makeReservoirModel(c);
+        DoublePointSolver<1> twice(c, *r3);
+        try {
+            twice.loadState(both);
+            ADD_FAILURE() << "a field written twice was accepted: " << named;
+        } catch (const Error& e) {
+            EXPECT_NE(std::string(e.what()).find("'" + named + "' and '" + numbered + "' are one field written twice"),
+                      std::string::npos)
+                << e.what();
+        }
     }
 }
 

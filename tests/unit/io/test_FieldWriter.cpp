@@ -1,4 +1,5 @@
 // FieldWriter: write point sets, read them back with the HDF5 C API, check the XDMF index.
+#include "core/BuildInfo.hpp"
 #include "io/FieldWriter.hpp"
 
 #include "core/Error.hpp"
@@ -125,6 +126,9 @@ TEST_F(FieldWriterTest, OneDimensionalColumnStandsAlongZ) {
     H5Aread(attribute, H5T_NATIVE_INT, &dimension);
     H5Aclose(attribute);
     EXPECT_EQ(dimension, 1);
+    // which build wrote it (core/BuildInfo.hpp)
+    EXPECT_EQ(readStringAttribute(file, "/", "quicksand"), qs::buildLine());
+    EXPECT_EQ(readStringAttribute(file, "/", "quicksand").rfind("quicksand " + qs::version() + " (commit ", 0), 0u);
     H5Fclose(file);
 }
 
