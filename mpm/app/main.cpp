@@ -102,11 +102,6 @@ int main(int argc, char** argv) {
         std::vector<qs::CaseOverride> overrides;
         for (const std::string& set : sets) overrides.push_back(qs::parseOverride(set));
         config = qs::loadCase(caseDir, overrides);
-        if (command == "run" && world.parallel())
-            throw qs::Error("quicksand run on " + std::to_string(world.size()) +
-                            " MPI ranks: the step over decomposed ranks is not built yet (issue 41); `quicksand check " +
-                            caseDir + "` under mpirun prints the decomposition a run will take. Run on one rank "
-                            "(without mpirun) with threads: OMP_NUM_THREADS=N quicksand run " + caseDir);
     } catch (const qs::Error& e) {
         failure = e.what();
     } catch (const std::exception& e) {
@@ -131,9 +126,14 @@ int main(int argc, char** argv) {
         return 0;
     }
 
+    if (world.parallel()) options.ranks = &world;
     try {
         qs::runCase(config, options);
         return 0;
+    } catch (const qs::SharedError& e) {
+        // every rank has it (the run's opening agreed on it): said once, and no rank waits
+        if (world.rank() == 0) std::cerr << "quicksand: error: " << e.what() << "\n";
+        return 1;
     } catch (const qs::Interrupted& e) {
         if (world.rank() == 0) std::cerr << "quicksand: " << e.what() << "\n";
         return e.exitCode();

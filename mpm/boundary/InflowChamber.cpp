@@ -109,6 +109,7 @@ void InflowChamber<D>::inject(const Grid<D>& grid, LiquidPoints<D>& liquid,
         }
     }
     for (Index slot = 0; slot < slots; ++slot) {
+        if (!owned_.empty() && !owned_[slot]) continue;  // another rank's
         const Scan& s = scan_[slot];
         QS_CHECK(s.ref >= 0, "the chamber's injection slot " << slot << " has no liquid in its two lowest cell rows: "
                              "the water left the chamber faster than one cell per step (reduce time.courant)");

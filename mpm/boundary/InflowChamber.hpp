@@ -46,6 +46,32 @@ public:
     Real gapAtNode(const Grid<D>& grid, Index node) const;
 
     std::vector<Real>& gaps() { return gaps_; }         ///< for checkpoints (one per slot)
+    /// Over MPI ranks: the slots under the columns this rank owns (ownsColumn(k) for the grid's
+    /// column k) are the only ones it injects into; the others' gaps come from their owners
+    /// (shareGaps). Without it, every slot.
+    template <class Owns>
+    void restrictTo(const Grid<D>& grid, Owns&& ownsColumn) {
+        owned_.assign(gaps_.size(), 1);
+        for (Index slot = 0; slot < static_cast<Index>(gaps_.size()); ++slot) {
+            Index rest = slot, column = 0, stride = 1;
+            for (int d = 0; d < D - 1; ++d) {
+                const Index n = grid.cells(d) * pointsPerCell_;
+                column += (rest % n) / pointsPerCell_ * stride;
+                rest /= n;
+                stride *= grid.cells(d);
+            }
+            owned_[slot] = ownsColumn(column) ? 1 : 0;
+        }
+    }
+    /// Every slot's gap on every rank: each owner's, added over the ranks (`sum` adds a vector
+    /// over the ranks in place), so that a gate node by a cut sees its neighbours' slots.
+    template <class Sum>
+    void shareGaps(Sum&& sum) {
+        if (owned_.empty()) return;
+        for (std::size_t slot = 0; slot < gaps_.size(); ++slot)
+            if (!owned_[slot]) gaps_[slot] = 0;
+        sum(gaps_);
+    }
     void setInjectedVolume(Real v) { injected_ = v; }
 
 private:
@@ -63,6 +89,7 @@ private:
     Real pointHeight_ = 0;
     int pointsPerCell_ = 1;
     Real injected_ = 0;
+    std::vector<char> owned_;  ///< the slots this rank injects into (empty: all)
 };
 
 }  // namespace qs

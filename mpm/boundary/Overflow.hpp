@@ -60,6 +60,34 @@ Real grainsBetween(const Grid<D>& grid, const SolidPoints<D>& solid, Index from,
 /// (spillOverRim)
 constexpr Real kWeirHoldsFrom = 0.5;
 
+/// The order in which the weir holds the points above the rim: lowest first, and among points
+/// at one height by their horizontal coordinates. It depends on where the points are, not on
+/// where they are stored, so that a run over MPI ranks takes the same decision.
+inline bool rimOrder(const Real* a, const Real* b, int dimension) {
+    if (a[dimension - 1] != b[dimension - 1]) return a[dimension - 1] < b[dimension - 1];
+    for (int d = 0; d < dimension - 1; ++d)
+        if (a[d] != b[d]) return a[d] < b[d];
+    return false;
+}
+
+/// The weir's decision over the points above the rim, taken in rimOrder (k = 0, 1, ...: their
+/// heights z(k) and volumes V(k)): from the lowest up, each is held while it is at most a cell
+/// above the rim and fits in what the rows lack beyond half a row (`hold`, m3), at least half of
+/// it; from the first that does not on, spill(k) is called for each.
+template <class Z, class Volume, class Spill>
+void weirDecides(Real hold, Real zRim, Real h, std::size_t count, Z&& z, Volume&& V, Spill&& spill) {
+    Real held = 0;
+    bool holding = true;
+    for (std::size_t k = 0; k < count; ++k) {
+        holding = holding && z(k) <= zRim + h && hold - held >= 0.5 * V(k);
+        if (holding) {
+            held += V(k);  // falls back into the trough
+            continue;
+        }
+        spill(k);
+    }
+}
+
 /// The overflow's weir. A liquid point whose centre passes the rim spills, except the crest water
 /// the rows under the rim need once they lack more than half a row (kWeirHoldsFrom). Then the
 /// points above the rim stay, lowest first, as long as each fits in what the rows lack beyond
@@ -100,21 +128,17 @@ Real spillOverRim(const Grid<D>& grid, Index rimRow, Index rows, Index from, Rea
     order.clear();
     for (Index p = first; p < n; ++p)
         if (above(p)) order.push_back(p);
-    std::sort(order.begin(), order.end(), [&](Index a, Index b) { return z(a) != z(b) ? z(a) < z(b) : a < b; });
+    std::sort(order.begin(), order.end(), [&](Index a, Index b) {
+        return rimOrder(&liquid.x[a * D], &liquid.x[b * D], D) || (!rimOrder(&liquid.x[b * D], &liquid.x[a * D], D) && a < b);
+    });
     drop.resize(n);
     std::fill(drop.begin() + first, drop.end(), 0);
-    Real held = 0, water = 0;
-    bool holding = true;  // from the lowest up, until a point does not fit
-    for (Index p : order) {
-        const Real V = liquid.volume[p];
-        holding = holding && z(p) <= zRim + h && hold - held >= 0.5 * V;
-        if (holding) {
-            held += V;  // falls back into the trough
-            continue;
-        }
-        drop[p] = 1;
-        water += liquid.mass[p] / density;
-    }
+    Real water = 0;
+    weirDecides(hold, zRim, h, order.size(), [&](std::size_t k) { return z(order[k]); },
+                [&](std::size_t k) { return liquid.volume[order[k]]; }, [&](std::size_t k) {
+                    drop[order[k]] = 1;
+                    water += liquid.mass[order[k]] / density;
+                });
     if (water > 0) compactPoints(liquid, drop, static_cast<std::size_t>(first));
     return water;
 }

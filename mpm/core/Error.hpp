@@ -16,6 +16,13 @@ public:
     explicit Error(const std::string& message) : std::runtime_error(message) {}
 };
 
+/// An error that every rank of an MPI run throws together, having agreed on it (the lowest
+/// rank's that met it): said once, by rank 0; no rank is left waiting, so none is aborted.
+class SharedError : public Error {
+public:
+    using Error::Error;
+};
+
 /// An error in a case file: carries file, line and key so the message can point at them.
 class InputError : public Error {
 public:

@@ -105,6 +105,46 @@ void Communicator::sumInPlace(std::vector<double>& values) const {
     MPI_Bcast(values.data(), n, MPI_DOUBLE, 0, MPI_COMM_WORLD);
 }
 
+void Communicator::maxInPlace(std::vector<double>& values) const {
+    if (size_ == 1 || values.empty()) return;
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MAX, MPI_COMM_WORLD);
+}
+
+void Communicator::minInPlace(std::vector<double>& values) const {
+    if (size_ == 1 || values.empty()) return;
+    MPI_Allreduce(MPI_IN_PLACE, values.data(), static_cast<int>(values.size()), MPI_DOUBLE, MPI_MIN, MPI_COMM_WORLD);
+}
+
+namespace {
+/// Each rank's count and its offset in the concatenation, in rank order.
+void countsAndOffsets(int size, int count, std::vector<int>& counts, std::vector<int>& offsets) {
+    counts.assign(static_cast<std::size_t>(size), 0);
+    MPI_Allgather(&count, 1, MPI_INT, counts.data(), 1, MPI_INT, MPI_COMM_WORLD);
+    offsets.assign(static_cast<std::size_t>(size), 0);
+    for (int r = 1; r < size; ++r) offsets[r] = offsets[r - 1] + counts[r - 1];
+}
+}  // namespace
+
+std::vector<double> Communicator::allGatherv(const std::vector<double>& local) const {
+    if (size_ == 1) return local;
+    std::vector<int> counts, offsets;
+    countsAndOffsets(size_, static_cast<int>(local.size()), counts, offsets);
+    std::vector<double> all(static_cast<std::size_t>(offsets.back() + counts.back()));
+    MPI_Allgatherv(local.data(), static_cast<int>(local.size()), MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+                   MPI_DOUBLE, MPI_COMM_WORLD);
+    return all;
+}
+
+std::vector<double> Communicator::gatherv(const std::vector<double>& local, int root) const {
+    if (size_ == 1) return local;
+    std::vector<int> counts, offsets;
+    countsAndOffsets(size_, static_cast<int>(local.size()), counts, offsets);
+    std::vector<double> all(rank_ == root ? static_cast<std::size_t>(offsets.back() + counts.back()) : 0);
+    MPI_Gatherv(local.data(), static_cast<int>(local.size()), MPI_DOUBLE, all.data(), counts.data(), offsets.data(),
+                MPI_DOUBLE, root, MPI_COMM_WORLD);
+    return all;
+}
+
 double Communicator::max(double local) const {
     if (size_ == 1) return local;
     double m = local;  // max and min are exact in any order
@@ -168,6 +208,10 @@ bool launchedByMpi() { return false; }
 MpiSession::MpiSession(int&, char**&) {}
 MpiSession::~MpiSession() = default;
 std::vector<double> Communicator::allGather(double local) const { return {local}; }
+std::vector<double> Communicator::allGatherv(const std::vector<double>& local) const { return local; }
+std::vector<double> Communicator::gatherv(const std::vector<double>& local, int) const { return local; }
+void Communicator::maxInPlace(std::vector<double>&) const {}
+void Communicator::minInPlace(std::vector<double>&) const {}
 double Communicator::sum(double local) const { return local; }
 long long Communicator::sum(long long local) const { return local; }
 void Communicator::sumInPlace(std::vector<double>&) const {}

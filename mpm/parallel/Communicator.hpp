@@ -39,8 +39,15 @@ public:
     double min(double local) const;
     /// Whether any rank passes true (an error on one rank, a signal received by one).
     bool any(bool local) const;
+    /// Element by element; max and min are exact in any order.
+    void maxInPlace(std::vector<double>& values) const;
+    void minInPlace(std::vector<double>& values) const;
     /// Every rank's value, in rank order, on every rank.
     std::vector<double> allGather(double local) const;
+    /// Every rank's values, of any length, concatenated in rank order, on every rank.
+    std::vector<double> allGatherv(const std::vector<double>& local) const;
+    /// The same on rank `root` only (empty elsewhere): what rank 0 writes for all of them.
+    std::vector<double> gatherv(const std::vector<double>& local, int root = 0) const;
     /// Rank `root`'s text on every rank.
     std::string broadcast(const std::string& text, int root = 0) const;
     void barrier() const;

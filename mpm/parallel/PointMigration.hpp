@@ -23,6 +23,7 @@
 #include "core/Error.hpp"
 #include "core/Types.hpp"
 #include "parallel/Communicator.hpp"
+#include "parallel/PointPacking.hpp"
 #include "parallel/Subdomain.hpp"
 #include "points/PointSet.hpp"
 
@@ -43,7 +44,7 @@ public:
     MigrationCount migrate(Set& set, const Communicator& comm) {
         MigrationCount count;
         const std::size_t n = set.size();
-        const std::size_t width = pointWidth(set);
+        const std::size_t width = packedWidth(set);
         drop_.assign(n, 0);
         for (auto& s : send_) s.clear();
         for (std::size_t p = 0; p < n; ++p) {
@@ -53,7 +54,7 @@ public:
             QS_CHECK(slot >= 0, "rank " << mine_.rank() << ": a point at " << describe(&set.x[p * D])
                                         << " has left for rank " << owner
                                         << ", which is not a neighbour: it moved past the ghost cells in one step");
-            pack(set, p, send_[static_cast<std::size_t>(slot)]);
+            packPoint(set, p, send_[static_cast<std::size_t>(slot)]);
             drop_[p] = 1;
             ++count.sent;
         }
@@ -64,11 +65,8 @@ public:
         comm.exchange(neighbours_, send_, recv_);
         if (count.sent > 0) compactPoints(set, drop_);
         for (std::size_t k = 0; k < neighbours_.size(); ++k) {
-            const std::size_t arriving = recv_[k].size() / width;
-            const std::size_t first = set.size();
-            resizePoints(set, first + arriving);
-            unpack(set, first, arriving, recv_[k]);
-            count.received += arriving;
+            unpackPoints(set, recv_[k], width);
+            count.received += recv_[k].size() / width;
         }
         return count;
     }
@@ -92,27 +90,6 @@ private:
         std::string s = "(";
         for (int a = 0; a < D; ++a) s += (a ? ", " : "") + std::to_string(x[a]);
         return s + ") m";
-    }
-    template <class Set>
-    static std::size_t pointWidth(const Set& set) {
-        std::size_t w = 0;
-        set.forEachField([&](const auto&, const FieldSpec& f) { w += static_cast<std::size_t>(f.components); });
-        return w;
-    }
-    template <class Set>
-    static void pack(const Set& set, std::size_t p, std::vector<double>& out) {
-        set.forEachField([&](const auto& field, const FieldSpec& f) {
-            for (int c = 0; c < f.components; ++c) out.push_back(static_cast<double>(field[p * f.components + c]));
-        });
-    }
-    template <class Set>
-    static void unpack(Set& set, std::size_t first, std::size_t count, const std::vector<double>& in) {
-        std::size_t at = 0;
-        for (std::size_t q = 0; q < count; ++q)
-            set.forEachField([&](auto& field, const FieldSpec& f) {
-                using T = typename std::decay_t<decltype(field)>::value_type;
-                for (int c = 0; c < f.components; ++c) field[(first + q) * f.components + c] = static_cast<T>(in[at++]);
-            });
     }
 
     const Subdomain<D>& mine_;

@@ -46,7 +46,7 @@ ColumnState DoublePointSolver<D>::columnState() const {
     s.gateFlux = gateFlux_;
     s.gatePressure = gatePressure_;
     s.reservoirHead = reservoir_.head();
-    s.sandSurface = sandSurface();
+    s.sandSurface = maxOverRanks(sandSurface());
     s.bedHeight = s.sandSurface - config_.filterLevel();
     s.waterSurface = waterSurface();
     measureStates(s);
@@ -63,25 +63,29 @@ ColumnState DoublePointSolver<D>::columnState() const {
         // reads the water's flux less the sliver's share of the grains' motion
         Real q = 0, a = 0;
         for (Index i = 0; i < grid_.numNodes(); ++i) {
-            if (grid_.nodeCoords(i)[D - 1] != row || nodes_.massL[i] <= 0) continue;
+            if (grid_.nodeCoords(i)[D - 1] != row || nodes_.massL[i] <= 0 || !ownsNode(i)) continue;
             const Real w = nodeFootprint(grid_, i) * footprintShare(i, monitor.x, monitor.y);
             if (w <= 0) continue;
             q += w * nodes_.porosity[i] * (nodes_.velL[i * D + D - 1] - nodes_.fedWeight[i * D + D - 1] * nodes_.velS[i * D + D - 1]);
             a += w;
         }
+        q = sumOverRanks(q);
+        a = sumOverRanks(a);
         s.monitorFlux.push_back(a > 0 ? q / a : 0.0);
     }
     s.cumulativeInflow = cumulativeInflow_;
     s.cumulativeOutflow = outflowVolume_;
-    s.cumulativeSolidOutflow = solidOutflowMass_;
-    s.injectedVolume = chamber_.injectedVolume();
+    s.cumulativeSolidOutflow = sumOverRanks(solidOutflowMass_);  // each rank's own sand out
+    s.injectedVolume = sumOverRanks(chamber_.injectedVolume());  // each rank's own slots'
     for (Real m : solid_.mass) s.solidMass += m;
     for (Real m : liquid_.mass) s.liquidMass += m;
+    s.solidMass = sumOverRanks(s.solidMass);
+    s.liquidMass = sumOverRanks(s.liquidMass);
     const Real stored = (s.liquidMass - initialLiquidMass_) / config_.liquid.density +
                         chamber_.gapVolume(grid_) - initialGapVolume_;
     s.ledgerResidual = cumulativeInflow_ - outflowVolume_ - stored;
-    s.solidPoints = solid_.size();
-    s.liquidPoints = liquid_.size();
+    s.solidPoints = static_cast<std::size_t>(sumOverRanks(static_cast<Real>(solid_.size())));
+    s.liquidPoints = static_cast<std::size_t>(sumOverRanks(static_cast<Real>(liquid_.size())));
 
     // hydraulic gradient: linear fit of the cell pressures over the interior sand cells (the
     // bottom and top sand cells excluded), i = -(dp/dz)/(rho_L g) - 1
@@ -120,6 +124,7 @@ Real DoublePointSolver<D>::bedTop(Real sandSurface) const {
         const Index r = std::clamp<Index>(static_cast<Index>(solid_.x[p * D + D - 1] / grid_.h()), 0, rows - 1);
         grains[r] += solid_.mass[p] / materials_[solid_.material[p]].grainDensity;
     }
+    sumOverRanks(grains);
     const Real rowVolume = grid_.crossSection() * grid_.h();
     if (grains[surfaceRow - 1] >= kSparse * rowVolume) return sandSurface;
     Index r = surfaceRow - 1;
@@ -141,6 +146,12 @@ void DoublePointSolver<D>::measureStates(ColumnState& s) const {
             fluid[r] += solid_.mass[p];
             totalFluid += solid_.mass[p];
         }
+    }
+    if (ranks_) {
+        sumOverRanks(mass);
+        sumOverRanks(fluid);
+        total = sumOverRanks(total);
+        totalFluid = sumOverRanks(totalFluid);
     }
     s.fluidisedShare = total > 0 ? totalFluid / total : 0.0;
     // the front: the run of rows above the filter in the state of the lowest sand row, its top
@@ -169,11 +180,31 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         Real pw = 0, w = 0;
         for (Index k = 0; k < perRow; ++k) {
             const Index c = r * perRow + k;
+            if (!ownsCell(c)) continue;
             pw += water_.pressure[c] * water_.weight[c];
             w += water_.weight[c];
             row.liquidCount += static_cast<int>(cells_.liquidStart[c + 1] - cells_.liquidStart[c]);
         }
-        row.porePressure = w > 0 ? pw / w : 0.0;
+        row.porePressure = pw;  // the weighted sum until the ranks' are added (below)
+        row.filterVelocity = w;
+    }
+    if (ranks_) {
+        std::vector<Real> sums(static_cast<std::size_t>(3 * rows));
+        for (Index r = 0; r < rows; ++r) {
+            sums[3 * r] = out[r].porePressure;
+            sums[3 * r + 1] = out[r].filterVelocity;
+            sums[3 * r + 2] = out[r].liquidCount;
+        }
+        sumOverRanks(sums);
+        for (Index r = 0; r < rows; ++r) {
+            out[r].porePressure = sums[3 * r];
+            out[r].filterVelocity = sums[3 * r + 1];
+            out[r].liquidCount = static_cast<int>(sums[3 * r + 2]);
+        }
+    }
+    for (auto& row : out) {
+        row.porePressure = row.filterVelocity > 0 ? row.porePressure / row.filterVelocity : 0.0;
+        row.filterVelocity = 0;
     }
     // row means over the solid points, each weighted by the ring it stands for in axisymmetry (its
     // radius), equally elsewhere
@@ -192,6 +223,32 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         ++out[r].solidCount;
         weight[r] += w;
     }
+    if (ranks_) {  // the rows' sums over the ranks, and their extremes
+        constexpr int kSums = 6;
+        std::vector<Real> sums(static_cast<std::size_t>(kSums * rows)), low(rows), high(rows);
+        for (Index r = 0; r < rows; ++r) {
+            const CellRow& row = out[r];
+            const Real v[kSums] = {row.verticalStress, row.horizontalStress, row.porosity, row.fluidisedShare,
+                                   Real(row.solidCount), weight[r]};
+            for (int k = 0; k < kSums; ++k) sums[kSums * r + k] = v[k];
+            low[r] = row.solidCount ? row.minPorosity : HUGE_VAL;
+            high[r] = row.solidCount ? row.maxPorosity : -HUGE_VAL;
+        }
+        sumOverRanks(sums);
+        ranks_->comm().minInPlace(low);
+        ranks_->comm().maxInPlace(high);
+        for (Index r = 0; r < rows; ++r) {
+            CellRow& row = out[r];
+            row.verticalStress = sums[kSums * r];
+            row.horizontalStress = sums[kSums * r + 1];
+            row.porosity = sums[kSums * r + 2];
+            row.fluidisedShare = sums[kSums * r + 3];
+            row.solidCount = static_cast<int>(sums[kSums * r + 4]);
+            weight[r] = sums[kSums * r + 5];
+            row.minPorosity = row.solidCount ? low[r] : 0.0;
+            row.maxPorosity = row.solidCount ? high[r] : 0.0;
+        }
+    }
     for (Index r = 0; r < rows; ++r) {
         auto& row = out[r];
         if (row.solidCount > 0) {
@@ -202,10 +259,13 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         }
         Real q = 0, a = 0;
         for (Index i = r * grid_.nodeStride(D - 1); i < (r + 1) * grid_.nodeStride(D - 1); ++i) {
+            if (!ownsNode(i)) continue;
             const Real wgt = nodeFootprint(grid_, i);
             q += wgt * nodes_.porosity[i] * (nodes_.velL[i * D + D - 1] - nodes_.fedWeight[i * D + D - 1] * nodes_.velS[i * D + D - 1]);
             a += wgt;
         }
+        q = sumOverRanks(q);  // one reduction per row: a profile is taken at outputs only
+        a = sumOverRanks(a);
         row.filterVelocity = a > 0 ? q / a : 0.0;
     }
     return out;
@@ -224,7 +284,7 @@ SandCells DoublePointSolver<D>::sandCells() const {
     s.state.assign(cells, CellSand::None);
     s.porosity.assign(cells, std::nan(""));
     for (Index c = 0; c < cells; ++c) {
-        if (cells_.solidStart[c] == cells_.solidStart[c + 1]) continue;
+        if (cells_.solidStart[c] == cells_.solidStart[c + 1] || !ownsCell(c)) continue;
         s.state[c] = sand_.fluidised[c] ? CellSand::Fluidised : CellSand::Solid;
         s.porosity[c] = sand_.porosity[c];
     }
@@ -236,6 +296,7 @@ SandCells DoublePointSolver<D>::sandCells() const {
     const Index columns = s.columns();
     s.baseFlux.assign(columns, 0.0);
     for (Index k = 0; k < columns; ++k) {
+        if (!ownsColumn(k)) continue;
         const Index c = grid_.columnCell(k, sandBottomRow_);
         Real q = 0, weight = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
@@ -249,10 +310,39 @@ SandCells DoublePointSolver<D>::sandCells() const {
     // the sand's top per column: where a stripe heaves against its neighbours, or a boil rises
     s.surface.assign(columns, std::nan(""));
     for (Index k = 0; k < columns; ++k) {
+        if (!ownsColumn(k)) continue;
         const ColumnSurface top = sandSurfaceOfColumn(grid_, solid_, cells_.solidStart, k, config_.points.solidPerCell);
         if (top.row >= 0) s.surface[k] = top.top;
     }
+    if (ranks_) gatherSandCells(s);
     return s;
+}
+
+/// Over MPI ranks: every cell's and column's entry from the rank that owns it, on every rank
+/// (others' entries are added as zeros; "no sand" travels as -1 and returns as NaN).
+template <int D>
+void DoublePointSolver<D>::gatherSandCells(SandCells& s) const {
+    const std::size_t cells = s.state.size(), columns = s.baseFlux.size();
+    std::vector<Real> all(2 * cells + 2 * columns, 0.0);
+    for (std::size_t c = 0; c < cells; ++c) {
+        if (!ownsCell(static_cast<Index>(c))) continue;
+        all[c] = static_cast<Real>(s.state[c]);
+        all[cells + c] = std::isnan(s.porosity[c]) ? -1.0 : s.porosity[c];
+    }
+    for (std::size_t k = 0; k < columns; ++k) {
+        if (!ownsColumn(static_cast<Index>(k))) continue;
+        all[2 * cells + k] = s.baseFlux[k];
+        all[2 * cells + columns + k] = std::isnan(s.surface[k]) ? -1.0 : s.surface[k];
+    }
+    sumOverRanks(all);
+    for (std::size_t c = 0; c < cells; ++c) {
+        s.state[c] = static_cast<CellSand>(static_cast<int>(all[c]));
+        s.porosity[c] = all[cells + c] < 0 ? std::nan("") : all[cells + c];
+    }
+    for (std::size_t k = 0; k < columns; ++k) {
+        s.baseFlux[k] = all[2 * cells + k];
+        s.surface[k] = all[2 * cells + columns + k] < 0 ? std::nan("") : all[2 * cells + columns + k];
+    }
 }
 
 template ColumnState DoublePointSolver<1>::columnState() const;
@@ -262,6 +352,8 @@ template std::vector<CellRow> DoublePointSolver<1>::profile() const;
 template std::vector<CellRow> DoublePointSolver<2>::profile() const;
 template std::vector<CellRow> DoublePointSolver<3>::profile() const;
 template SandCells DoublePointSolver<2>::sandCells() const;
+template void DoublePointSolver<2>::gatherSandCells(SandCells&) const;
+template void DoublePointSolver<3>::gatherSandCells(SandCells&) const;
 template SandCells DoublePointSolver<3>::sandCells() const;
 template std::vector<Real> DoublePointSolver<1>::sandFeeding() const;
 template std::vector<Real> DoublePointSolver<2>::sandFeeding() const;

@@ -12,6 +12,7 @@
 #include "solver/Parallel.hpp"
 #include "solver/RunSize.hpp"
 #include "materials/ConstitutiveModels.hpp"
+#include "parallel/Decomposition.hpp"
 
 namespace qs {
 
@@ -25,7 +26,7 @@ Index roundCells(Real length, Real h) { return static_cast<Index>(std::llround(l
 // ---------------------------------------------------------------------------------------------
 
 template <int D>
-DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel& reservoir)
+DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel& reservoir, const Communicator* ranks)
     : config_(config), reservoir_(reservoir) {
     const Real h = config.grid.cellSize;
     IVec<D> cells;
@@ -57,12 +58,23 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
 
     for (const auto& m : materials_) solid_.internalCount = std::max(solid_.internalCount, m.model->stateCount());
     buildColumn(config, grid_, materials_, solid_, liquid_);
+    if (ranks && ranks->parallel()) {
+        // every rank builds the column alike and keeps its block's points
+        QS_CHECK(config.time.scheme == TimeScheme::Explicit,
+                 config.caseDirectory << "/case.toml: time.scheme = \"semi_implicit\" does not run on MPI ranks yet (its pressure "
+                                      "solve over the ranks is the next step of issue 41); run it on one rank, or with "
+                                      "time.scheme = \"explicit\"");
+        ranks_ = std::make_unique<RankShare<D>>(*ranks, decompose(config, ranks->size()), grid_, ghostPointLayers(config));
+        ranks_->keepOwned(solid_);
+        ranks_->keepOwned(liquid_);
+    }
     allocate();
     masks_.build(grid_, config);
     for (Index i : masks_.gateNodes) gateArea_ += nodeFootprint(grid_, i);
-    integrator_ = makeTimeIntegrator(StepContext<D>{config_, grid_, masks_, cells_, filling_, water_, nodes_});
+    integrator_ = makeTimeIntegrator(StepContext<D>{config_, grid_, masks_, cells_, filling_, water_, nodes_, ranks_.get()});
     // new points as short as the free-water points, so they do not leave sand cells empty
     chamber_.setup(grid_, h / freeWaterPointsPerCell(config), config.points.liquidPerCell);
+    if (ranks_) chamber_.restrictTo(grid_, [&](Index column) { return ranks_->ownsColumn(column); });
 
     for (const auto& m : config.monitors) {
         const Index row = std::clamp<Index>(std::llround(m.elevation / h), 0, grid_.nodes(D - 1) - 1);
@@ -74,14 +86,32 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
 
     initialLiquidMass_ = 0;
     for (Real m : liquid_.mass) initialLiquidMass_ += m;
+    initialLiquidMass_ = sumOverRanks(initialLiquidMass_);
     gateLaw_ = reservoir_.gateLaw(0.0);
     gatePressure_ = gateLaw_.staticPressure;
     // fill the cell and node fields once so that the state at t = 0 can be reported
+    exchangePoints();
     sortPoints();
     classifyCells();
     pointsToGrid();
     measureSandPorosity();
     computeForces();
+    dropGhostPoints();
+}
+
+template <int D>
+void DoublePointSolver<D>::exchangePoints() {
+    if (!ranks_) return;
+    ranks_->exchange(solid_);
+    ranks_->exchange(liquid_);
+    solid_.stressReturn.resize(solid_.size());  // per-step scratch beside the registry
+}
+
+template <int D>
+void DoublePointSolver<D>::dropGhostPoints() {
+    if (!ranks_) return;
+    ranks_->dropGhosts(solid_, cells_.solidStart, solid_.stressReturn);
+    ranks_->dropGhosts(liquid_, cells_.liquidStart, liquid_.weight);
 }
 
 template <int D>
@@ -122,6 +152,7 @@ void DoublePointSolver<D>::step() {
     // the gate law for this step, asked afresh: a coupling scheme may have started a new window
     // (or rolled the window back) since the last step
     gateLaw_ = reservoir_.gateLaw(time_);
+    exchangePoints();
     sortPoints();
     classifyCells();
     pointsToGrid();
@@ -158,6 +189,7 @@ void DoublePointSolver<D>::runGravityStage() {
     chamber_.setInjectedVolume(0);
     initialLiquidMass_ = 0;
     for (Real m : liquid_.mass) initialLiquidMass_ += m;
+    initialLiquidMass_ = sumOverRanks(initialLiquidMass_);
     initialGapVolume_ = chamber_.gapVolume(grid_);
     gateLaw_ = reservoir_.gateLaw(0.0);
 }
@@ -188,12 +220,13 @@ Real DoublePointSolver<D>::sandSurface() const {
 // rim left no water "above the sand" and the surface read 0 (piping3D, 2026-12-06).
 template <int D>
 Real DoublePointSolver<D>::waterSurface() const {
-    Real volume = chamber_.gapVolume(grid_);
+    Real volume = 0;  // the points': each rank's own, added over the ranks
     for (std::size_t p = 0; p < liquid_.size(); ++p)
         volume += liquid_.mass[p] / config_.liquid.density * (1 + liquid_.cavity[p]);
     for (std::size_t p = 0; p < solid_.size(); ++p)
         volume += solid_.mass[p] / materials_[solid_.material[p]].grainDensity;
-    return volume / grid_.crossSection();
+    // the chamber's gaps are every slot's on every rank (InflowChamber::shareGaps)
+    return (chamber_.gapVolume(grid_) + sumOverRanks(volume)) / grid_.crossSection();
 }
 
 template class DoublePointSolver<1>;

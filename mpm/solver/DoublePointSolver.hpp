@@ -39,6 +39,8 @@
 #include "grid/Grid.hpp"
 #include "io/CaseConfig.hpp"
 #include "materials/ConstitutiveModel.hpp"
+#include "parallel/Communicator.hpp"
+#include "parallel/RankShare.hpp"
 #include "physics/Cavitation.hpp"
 #include "physics/LiquidStateRule.hpp"
 #include "physics/FrontDiffusion.hpp"
@@ -109,7 +111,9 @@ struct CellRow {
 template <int D>
 class DoublePointSolver {
 public:
-    DoublePointSolver(const CaseConfig& config, ReservoirModel& reservoir);
+    /// With `ranks` of more than one process (mpirun), the column is decomposed over them
+    /// (parallel/RankShare.hpp): each solver holds its block's points and steps with the others.
+    DoublePointSolver(const CaseConfig& config, ReservoirModel& reservoir, const Communicator* ranks = nullptr);
     // the time scheme holds references to the solver's fields: it stays where it was built
     DoublePointSolver(const DoublePointSolver&) = delete;
     DoublePointSolver& operator=(const DoublePointSolver&) = delete;
@@ -143,6 +147,9 @@ public:
     /// starvedShare(); inside the sand the ratio is 0.4 to 0.5 with linear hats.
     std::vector<Real> sandFeeding() const;
 
+    /// This rank's share of a decomposed run (null on one rank).
+    const RankShare<D>* rankShare() const { return ranks_.get(); }
+
     void saveState(CheckpointData& data) const;
     void loadState(const CheckpointData& data);
 
@@ -168,6 +175,17 @@ private:
     void checkHealth() const;
     void checkWater(const CheckpointData& data, bool semi) const;  // SolverCheckpoint.cpp
 
+    // over MPI ranks (parallel/RankShare.hpp); on one rank each is the plain serial operation
+    void exchangePoints();            // the step's start: migrants and ghost copies
+    void dropGhostPoints();           // after the step's gather: the copies go
+    Real spillOnRanks(Index lowCell, Real grains);
+    bool ownsCell(Index c) const { return !ranks_ || ranks_->ownsCell(c); }
+    bool ownsNode(Index i) const { return !ranks_ || ranks_->ownsNode(i); }
+    bool ownsColumn(Index k) const { return !ranks_ || ranks_->ownsColumn(k); }
+    Real sumOverRanks(Real local) const { return ranks_ ? ranks_->comm().sum(local) : local; }
+    void sumOverRanks(std::vector<Real>& local) const { if (ranks_) ranks_->comm().sumInPlace(local); }
+    Real maxOverRanks(Real local) const { return ranks_ ? ranks_->comm().max(local) : local; }
+
     // helpers
     void allocate();
     template <class Set>
@@ -175,10 +193,11 @@ private:
     template <class Set>
     void computeWeights(Set& set);
     Real waterSurface() const;
-    Real sandSurface() const;
+    Real sandSurface() const;  ///< this rank's points' (all of them on one rank)
     Real bedTop(Real sandSurface) const;
     Real surchargeNow() const;
     void measureStates(ColumnState& s) const;
+    void gatherSandCells(SandCells& s) const;
     /// The share of a node's footprint inside horizontal ranges (1 without them).
     Real footprintShare(Index node, const std::optional<HorizontalRange>& x,
                         const std::optional<HorizontalRange>& y) const;
@@ -189,6 +208,7 @@ private:
     const CaseConfig& config_;
     ReservoirModel& reservoir_;
     Grid<D> grid_;
+    std::unique_ptr<RankShare<D>> ranks_;  ///< this rank's block, over MPI ranks (null on one)
     std::vector<SolidMaterial> materials_;
     SolidPoints<D> solid_;
     LiquidPoints<D> liquid_;

@@ -101,13 +101,23 @@ void DoublePointSolver<D>::classifyCells() {
         const Index from = lowRow >= 1 ? (lowRow - 1) * up : first;
         const Index to = std::min(last + up, nc);
         const Real zLow = lowRow * grid_.h(), zRim = overflowRow_ * grid_.h();
-        const Real water = waterBetween(grid_, liquid_, cells_.liquidStart[from], cells_.liquidStart[to], zLow, zRim,
-                                        config_.points.liquidPerCell);
         // a bed risen into these rows fills them with grains and the water in its pores: the
         // rows are full (counting water alone stopped a boil reaching the rim, and the 2D
         // Deltares column on 9.3 mm cells, its expanded bed two rows under the rim)
-        const Real grains = grainsBetween(grid_, solid_, cells_.solidStart[from], cells_.solidStart[to], zLow, zRim,
-                                          config_.points.solidPerCell);
+        const int lpc = config_.points.liquidPerCell, spc = config_.points.solidPerCell;
+        Real water = 0, grains = 0;
+        if (!ranks_) {
+            water = waterBetween(grid_, liquid_, cells_.liquidStart[from], cells_.liquidStart[to], zLow, zRim, lpc);
+            grains = grainsBetween(grid_, solid_, cells_.solidStart[from], cells_.solidStart[to], zLow, zRim, spc);
+        } else {  // the rank's own cells (its ghosts are other ranks'), added over the ranks
+            for (Index c = from; c < to; ++c) {
+                if (!ownsCell(c)) continue;
+                water += waterBetween(grid_, liquid_, cells_.liquidStart[c], cells_.liquidStart[c + 1], zLow, zRim, lpc);
+                grains += grainsBetween(grid_, solid_, cells_.solidStart[c], cells_.solidStart[c + 1], zLow, zRim, spc);
+            }
+            water = sumOverRanks(water);
+            grains = sumOverRanks(grains);
+        }
         const Real rowsMeasured = static_cast<Real>(overflowRow_ - lowRow);
         const Real missing = std::max(Real(0), room - grains - water) / room * rowsMeasured;  // in rows
         QS_CHECK(missing <= 1,

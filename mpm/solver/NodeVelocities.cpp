@@ -21,10 +21,15 @@ void uniformGateVelocity(const StepContext<D>& ctx, Real dt, Real resistance) {
     // the wet part of the gate carries the flux, Q = v A_wet, and the tube loss R Q on it
     Real momentum = 0, mass = 0, wet = 0;
     for (Index i : ctx.masks.gateNodes) {
-        if (nodes.massL[i] <= 0) continue;
+        if (nodes.massL[i] <= 0 || (ctx.ranks && !ctx.ranks->ownsNode(i))) continue;
         momentum += nodes.massL[i] * nodes.velL[i * D + D - 1];  // the drag-free predictor (no solid here)
         mass += nodes.massL[i];
         wet += nodeFootprint(ctx.grid, i);
+    }
+    if (ctx.ranks) {  // the whole gate plane's, over the ranks
+        momentum = ctx.ranks->comm().sum(momentum);
+        mass = ctx.ranks->comm().sum(mass);
+        wet = ctx.ranks->comm().sum(wet);
     }
     const Real v = mass > 0 ? momentum / (mass + dt * resistance * wet * wet) : 0.0;
     for (Index i : ctx.masks.gateNodes)
@@ -39,8 +44,9 @@ template <int D>
 Real gateFlux(const StepContext<D>& ctx) {
     Real Qg = 0;
     for (Index i : ctx.masks.gateNodes)
-        if (ctx.nodes.massL[i] > 0) Qg += ctx.nodes.velL[i * D + D - 1] * nodeFootprint(ctx.grid, i);
-    return Qg;
+        if (ctx.nodes.massL[i] > 0 && (!ctx.ranks || ctx.ranks->ownsNode(i)))
+            Qg += ctx.nodes.velL[i * D + D - 1] * nodeFootprint(ctx.grid, i);
+    return ctx.ranks ? ctx.ranks->comm().sum(Qg) : Qg;
 }
 
 #define QS_INSTANTIATE(D)                                                          \

@@ -23,6 +23,8 @@
 
 namespace qs {
 
+class Communicator;
+
 struct RunOptions {
     bool resume = false;          ///< continue from OUTPUT/checkpoint.h5
     bool quiet = false;           ///< no progress lines
@@ -37,6 +39,10 @@ struct RunOptions {
     /// A windowed reservoir model to couple to instead of the case's reservoir (not owned; tests
     /// couple the InertialTubeModel this way). reservoir.model = "openfoam" makes one itself.
     WindowedModel* windowedModel = nullptr;
+    /// The MPI ranks to run over (mpirun; parallel/RankShare.hpp): every rank opens the same
+    /// Simulation and makes the same calls; rank 0 writes the files, and onOutput and onPipes see
+    /// the whole column on every rank. Null, or one rank: the run is serial.
+    const Communicator* ranks = nullptr;
 };
 
 struct RunSummary {

@@ -16,6 +16,8 @@
 #include "io/OutputRotation.hpp"
 #include "io/PipesTable.hpp"
 #include "io/SeriesWriter.hpp"
+#include "parallel/Communicator.hpp"
+#include "parallel/GatherPoints.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/Advancer.hpp"
 #include "solver/Interruption.hpp"
@@ -71,21 +73,56 @@ std::vector<PointField> writtenFields(const Set& set, std::vector<std::vector<do
     return list;
 }
 
+/// The points as one rank holds them, or over MPI ranks gathered on rank 0 (in rank order).
 template <int D>
-void writeFields(FieldWriter& writer, const DoublePointSolver<D>& solver, const SandCells* cells) {
-    const auto& s = solver.solid();
-    const auto& l = solver.liquid();
+struct WrittenPoints {
+    SolidPoints<D> solid;
+    LiquidPoints<D> liquid;
+    std::vector<int> stressReturn;
+};
+
+template <int D>
+void writeFields(FieldWriter* writer, const DoublePointSolver<D>& solver, const SandCells* cells,
+                 const Communicator* ranks) {
+    std::optional<WrittenPoints<D>> gathered;
+    if (ranks)  // collective: every rank sends, rank 0 (the one with a writer) writes
+        gathered = WrittenPoints<D>{gatherPoints(solver.solid(), *ranks), gatherPoints(solver.liquid(), *ranks),
+                                    gatherValues(solver.solid().stressReturn, *ranks)};
+    if (!writer) return;
+    const auto& s = gathered ? gathered->solid : solver.solid();
+    const auto& l = gathered ? gathered->liquid : solver.liquid();
+    const auto& stressReturn = gathered ? gathered->stressReturn : solver.solid().stressReturn;
     std::vector<std::vector<double>> scratch;
     scratch.reserve(8);  // the written integer fields: the pointers into it must stay put
-    writer.beginStep(solver.time());
+    writer->beginStep(solver.time());
     std::vector<PointField> solidFields = writtenFields(s, scratch);
     // the one scratch field written: how the last step's stress update returned (a diagnostic)
-    scratch.emplace_back(s.stressReturn.begin(), s.stressReturn.end());
+    scratch.emplace_back(stressReturn.begin(), stressReturn.end());
     solidFields.push_back({"stress_return", scratch.back().data(), 1});
-    writer.writePointSet("solid", s.size(), s.x.data(), solidFields);
-    writer.writePointSet("liquid", l.size(), l.x.data(), writtenFields(l, scratch));
-    if (cells) writeCells(writer, solver.grid(), *cells);
-    writer.endStep();
+    writer->writePointSet("solid", s.size(), s.x.data(), solidFields);
+    writer->writePointSet("liquid", l.size(), l.x.data(), writtenFields(l, scratch));
+    if (cells) writeCells(*writer, solver.grid(), *cells);
+    writer->endStep();
+}
+
+/// Runs `f` on every rank and agrees on its errors: if any rank's fails, every rank throws the
+/// lowest failing rank's message as a SharedError (said once, by rank 0). Collective; for the
+/// run's opening, where a case fails alike on every rank or on rank 0 alone (its files), and a
+/// rank that went on would wait in the next reduction for one that had stopped.
+template <class F>
+void agreeOnErrors(const Communicator* ranks, F&& f) {
+    if (!ranks) return f();
+    std::string failure;
+    try {
+        f();
+    } catch (const Error& e) {
+        failure = e.what();
+    } catch (const std::exception& e) {
+        failure = std::string("internal error: ") + e.what();
+    }
+    const std::vector<double> failed = ranks->allGather(failure.empty() ? 0.0 : 1.0);
+    for (int r = 0; r < static_cast<int>(failed.size()); ++r)
+        if (failed[r] != 0) throw SharedError(ranks->broadcast(failure, r));
 }
 
 }  // namespace
@@ -116,7 +153,9 @@ public:
           plannedEnd_(options.endTime >= 0 ? options.endTime : config.time.end),
           outDir_(fs::path(config.caseDirectory) / config.output.directory),
           checkpointPath_(outDir_ / "checkpoint.h5"),
-          windowed_(options.windowedModel || config.reservoir.kind == ReservoirKind::OpenFoam) {
+          windowed_(options.windowedModel || config.reservoir.kind == ReservoirKind::OpenFoam),
+          ranks_(options.ranks && options.ranks->parallel() ? options.ranks : nullptr),
+          root_(!ranks_ || ranks_->rank() == 0) {
         open();
     }
 
@@ -135,12 +174,18 @@ private:
     void open();
     void printHeader();
     void reportProgress(Clock::time_point now);
+    /// A signal received and whether progress is due, agreed over the ranks (collective, once
+    /// a step): every rank checkpoints, stops and reports at the same step.
+    std::pair<int, bool> poll(Clock::time_point now) const;
 
     const CaseConfig config_;      ///< a copy: the run may outlive its caller's (a Python session)
     const RunOptions options_;
     const double plannedEnd_;       ///< s, time.end or the caller's: the progress lines' 100 %
     const fs::path outDir_, checkpointPath_;
     const bool windowed_;
+    /// over MPI ranks, all of them (null on one); rank 0 is the root, which writes the files
+    const Communicator* ranks_ = nullptr;
+    bool root_ = true;
 
     // in the order they are made (and unmade in reverse): the solver holds the reservoir, the
     // gate its model
@@ -166,24 +211,41 @@ private:
 template <int D>
 void RunOf<D>::open() {
     const CaseConfig& config = config_;
-    // Validate everything that can be validated before touching an earlier output directory:
-    // what `quicksand check` validates too (solver/RunPreconditions.hpp).
-    validateRun(config);
-    if (!windowed_) builtIn_ = makeReservoirModel(config);
-    if (options_.resume)
-        QS_CHECK(fs::exists(checkpointPath_),
-                 "cannot resume: no checkpoint at " << checkpointPath_.string() << " (run without --resume first)");
-    if (options_.writeFiles && !options_.resume) rotation_.emplace(outDir_, config.caseDirectory + "/case.toml");
+    agreeOnErrors(ranks_, [&] {
+        // Validate everything that can be validated before touching an earlier output directory:
+        // what `quicksand check` validates too (solver/RunPreconditions.hpp).
+        validateRun(config);
+        QS_CHECK(!ranks_ || !windowed_,
+                 config.caseDirectory << "/case.toml: reservoir.model = \"openfoam\" does not run on MPI ranks yet (the "
+                                         "line over OpenFOAM's Pstream is the next part of issue 41); run the coupled "
+                                         "case on one rank, without mpirun");
+        if (!windowed_) builtIn_ = makeReservoirModel(config);
+        if (options_.resume)
+            QS_CHECK(fs::exists(checkpointPath_),
+                     "cannot resume: no checkpoint at " << checkpointPath_.string() << " (run without --resume first)");
+        // rank 0 alone writes the files: it rotates the earlier output
+        if (root_ && options_.writeFiles && !options_.resume) rotation_.emplace(outDir_, config.caseDirectory + "/case.toml");
 
-    // A windowed model (OpenFOAM) works in the output directory.
-    model_ = options_.windowedModel;
-    if (windowed_ && !model_) {
-        ownedModel_ = makeOpenFoamModel(config, options_.resume);
-        model_ = ownedModel_.get();
-    }
-    if (windowed_) gate_ = std::make_unique<CouplingInterface>(*model_);
-    reservoir_ = windowed_ ? static_cast<ReservoirModel*>(gate_.get()) : builtIn_.get();
-    solver_ = std::make_unique<DoublePointSolver<D>>(config, *reservoir_);
+        // A windowed model (OpenFOAM) works in the output directory.
+        model_ = options_.windowedModel;
+        if (windowed_ && !model_) {
+            ownedModel_ = makeOpenFoamModel(config, options_.resume);
+            model_ = ownedModel_.get();
+        }
+        if (windowed_) gate_ = std::make_unique<CouplingInterface>(*model_);
+        reservoir_ = windowed_ ? static_cast<ReservoirModel*>(gate_.get()) : builtIn_.get();
+    });
+    // over MPI ranks the constructor cuts the grid (decompose: a 1D column, or more ranks than
+    // the grid can be cut into, is refused alike on every rank) and exchanges the ghost points
+    agreeOnErrors(ranks_, [&] {
+        if (!ranks_) return;
+        decompose(config, ranks_->size());
+        QS_CHECK(config.time.scheme == TimeScheme::Explicit,
+                 config.caseDirectory << "/case.toml: time.scheme = \"semi_implicit\" does not run on MPI ranks yet "
+                                         "(its pressure solve over the ranks is the next part of issue 41); run it on "
+                                         "one rank, or with time.scheme = \"explicit\"");
+    });
+    solver_ = std::make_unique<DoublePointSolver<D>>(config, *reservoir_, ranks_);
     if (rotation_) rotation_->commit();  // everything loaded: the earlier output becomes .previous
 
     if (windowed_ && options_.writeFiles)
@@ -201,30 +263,34 @@ void RunOf<D>::open() {
     }
 
     if (options_.resume) {
-        try {
-            const CheckpointData data = readCheckpoint(checkpointPath_.string());
-            solver_->loadState(data);
-            advancer_->load(data);
-        } catch (const Error& e) {
-            std::string what = e.what();
-            if (what.rfind(checkpointPath_.string(), 0) != 0) what = checkpointPath_.string() + ": " + what;
-            throw Error(what + ". This checkpoint cannot be resumed from; run without --resume to start again (the "
-                               "results now in " + outDir_.string() + " are then kept as " + outDir_.string() +
-                        ".previous)");
-        }
+        // every rank reads the whole checkpoint (it resumes on any number of ranks) and keeps its
+        // block's points; a checkpoint that cannot be read fails alike on every rank
+        agreeOnErrors(ranks_, [&] {
+            try {
+                const CheckpointData data = readCheckpoint(checkpointPath_.string());
+                solver_->loadState(data);
+                advancer_->load(data);
+            } catch (const Error& e) {
+                std::string what = e.what();
+                if (what.rfind(checkpointPath_.string(), 0) != 0) what = checkpointPath_.string() + ": " + what;
+                throw Error(what + ". This checkpoint cannot be resumed from; run without --resume to start again (the "
+                                   "results now in " + outDir_.string() + " are then kept as " + outDir_.string() +
+                            ".previous)");
+            }
+        });
     } else {
         solver_->runGravityStage();
     }
     // the case as run: the file, or with the command line's overrides marked
     // (io/CaseOverride.hpp). Written once the checkpoint has loaded: a resume that is refused
     // (another scheme's checkpoint, say, with --set overrides) leaves the earlier one as it was
-    if (options_.writeFiles && !config.effectiveCase.empty()) {
+    if (root_ && options_.writeFiles && !config.effectiveCase.empty()) {
         std::ofstream effective(outDir_ / "case.effective.toml", std::ios::trunc);
         effective << config.effectiveCase;
         QS_CHECK(effective.good(), "cannot write " << (outDir_ / "case.effective.toml").string());
     }
 
-    if (options_.writeFiles) {
+    if (root_ && options_.writeFiles) {
         series_ = std::make_unique<SeriesWriter>((outDir_ / "series.csv").string(), seriesColumns(config),
                                                  options_.resume, solver_->time());
         if (D > 1)
@@ -238,7 +304,7 @@ void RunOf<D>::open() {
     const double halfStep = 0.5 * solver_->dt();
     nextOutput_ = options_.resume ? (std::floor((solver_->time() + halfStep) / interval) + 1) * interval : 0.0;
     // a resumed run keeps the field steps written before its first new output
-    if (options_.writeFiles && config.output.fields)
+    if (root_ && options_.writeFiles && config.output.fields)
         fields_ = std::make_unique<FieldWriter>(outDir_.string(), D, options_.resume ? nextOutput_ - halfStep : -1e300);
     // fields.h5 and fields.xdmf list new outputs once a second: a 1D column writes its outputs
     // many to the second, and each listing rewrites both files
@@ -261,13 +327,22 @@ void RunOf<D>::printHeader() {
         couplingLog_ << "# " << model_->name() << (model_->description().empty() ? "" : ": " + model_->description())
                      << (options_.resume ? " (resumed)" : "") << "\n";
     if (options_.quiet) return;
-    std::printf("%s\n", buildLine().c_str());
     const DoublePointSolver<D>& s = *solver_;
+    const ColumnState now = s.columnState();  // collective over ranks: the points of all of them
+    if (!root_) return;
+    std::printf("%s\n", buildLine().c_str());
     const bool semi = s.scheme() == TimeScheme::SemiImplicit;
     std::printf("quicksand: %dD, %s, dt = %.3g s (%s = %.1f m/s), %zu solid + %zu liquid points, t = %.4g -> %.4g s%s\n",
                 D, semi ? "semi-implicit" : "explicit", s.dt(), semi ? "c_skeleton" : "c_fast", s.waveSpeed(),
-                s.solid().size(), s.liquid().size(), s.time(), plannedEnd_,
+                now.solidPoints, now.liquidPoints, s.time(), plannedEnd_,
                 windowed_ ? (", coupled to " + model_->name()).c_str() : "");
+    if (ranks_) {
+        const Decomposition& d = s.rankShare()->decomposition();
+        std::printf("quicksand: %d MPI ranks, blocks of whole columns %d x %d, %d cells of ghost points beside each "
+                    "cut, point imbalance %.3f (quicksand check --ranks %d shows the blocks)\n",
+                    ranks_->size(), d.parts[0], D == 3 ? d.parts[1] : 1, s.rankShare()->layers(), d.imbalance(),
+                    ranks_->size());
+    }
     if (!config_.liquid.bulkModulusGiven)
         std::printf("quicksand: water K_L = %.4g Pa (liquid.bulk_modulus not given: %s)\n", config_.liquid.bulkModulus,
                     config_.liquid.defaultWaterName());
@@ -277,20 +352,23 @@ void RunOf<D>::printHeader() {
 
 template <int D>
 void RunOf<D>::writeOutput() {
+    // every call below that measures is collective over ranks: each rank makes the same ones,
+    // decided from what all know alike (the case and the options, not which rank writes)
     const ColumnState s = solver_->columnState();
     if (series_) series_->write(seriesRow(s));
+    const bool fields = options_.writeFiles && config_.output.fields;
     // 2D, 3D: the cells' sand state, once, for the fields, pipes.csv and the caller
     std::optional<SandCells> cells;
     if constexpr (D > 1)
-        if (fields_ || pipes_ || options_.onPipes) cells = solver_->sandCells();
-    if (fields_) writeFields(*fields_, *solver_, cells ? &*cells : nullptr);
+        if (options_.writeFiles || options_.onPipes) cells = solver_->sandCells();
+    if (fields) writeFields(fields_.get(), *solver_, cells ? &*cells : nullptr, ranks_);
     if (cells && (pipes_ || options_.onPipes)) {
         const PipeSurvey survey = findPipes(*cells);
         if (pipes_)
             for (const auto& row : pipesRows(s.time, D, survey)) pipes_->write(row);
         if (options_.onPipes) options_.onPipes(s.time, *cells, survey);
     }
-    reservoir_->writeOutput(s.time);
+    if (root_) reservoir_->writeOutput(s.time);
     if (options_.onOutput) options_.onOutput(s, solver_->profile());
 }
 
@@ -299,24 +377,38 @@ void RunOf<D>::writeCheckpoint() {
     if (!options_.writeFiles) return;
     if (fields_) fields_->makeDurable();  // the outputs before the checkpoint that counts on them
     CheckpointData data;
-    solver_->saveState(data);
+    solver_->saveState(data);  // collective over ranks: rank 0 gathers every rank's points
     advancer_->save(data);
-    qs::writeCheckpoint(checkpointPath_.string(), data);
+    if (root_) qs::writeCheckpoint(checkpointPath_.string(), data);
     lastCheckpoint_ = solver_->time();
 }
 
 template <int D>
 void RunOf<D>::reportProgress(Clock::time_point now) {
-    if (options_.quiet || std::chrono::duration<double>(now - lastProgress_).count() < config_.output.progressInterval)
-        return;
     lastProgress_ = now;
     const double wall = std::chrono::duration<double>(now - wall0_).count();
     const double rate = (solver_->stepCount() - steps0_) / wall;
     const double eta = (plannedEnd_ - solver_->time()) / solver_->dt() / rate;
-    const ColumnState s = solver_->columnState();
+    const ColumnState s = solver_->columnState();  // collective over ranks
+    if (!root_) return;
     std::printf("  t = %.4g s (%.1f %%)  %.0f steps/s  ETA %s  gate flux %.4g m3/s  i = %.3f\n", solver_->time(),
                 100 * solver_->time() / plannedEnd_, rate, formatSeconds(eta).c_str(), s.gateFlux, s.gradient);
     std::fflush(stdout);
+}
+
+template <int D>
+std::pair<int, bool> RunOf<D>::poll(Clock::time_point now) const {
+    int sig = interruptionRequested();
+    // progress by rank 0's clock
+    bool due = !options_.quiet && root_ &&
+               std::chrono::duration<double>(now - lastProgress_).count() >= config_.output.progressInterval;
+    if (ranks_) {
+        std::vector<double> flags{double(sig), due ? 1.0 : 0.0};
+        ranks_->maxInPlace(flags);
+        sig = static_cast<int>(flags[0]);
+        due = flags[1] != 0;
+    }
+    return {sig, due};
 }
 
 template <int D>
@@ -327,8 +419,11 @@ void RunOf<D>::advanceTo(double end) {
     // Ctrl-C or SIGTERM: the step (or coupling window) in progress ends, a checkpoint is
     // written, and the run stops saying how to resume (solver/Interruption.hpp)
     InterruptionGuard interruption;
+    bool progressDue = false;
     while (solver.time() < end - half) {
-        if (const int sig = interruptionRequested()) {
+        const auto [sig, due] = poll(Clock::now());
+        progressDue = due;
+        if (sig) {
             writeCheckpoint();
             std::ostringstream m;
             m << "interrupted by " << signalName(sig) << " at t = " << solver.time() << " s (step "
@@ -362,7 +457,7 @@ void RunOf<D>::advanceTo(double end) {
         }
         const auto now = Clock::now();
         if (fields_) fields_->listIfDue(now);
-        reportProgress(now);
+        if (progressDue) reportProgress(now);
     }
 }
 
@@ -375,7 +470,8 @@ RunSummary RunOf<D>::finish() {
     r.profile = solver.profile();
     r.steps = solver.stepCount() - steps0_;
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - wall0_).count();
-    r.pointUpdatesPerSecond = r.wallSeconds > 0 ? pointSteps_ / r.wallSeconds : 0;
+    const double pointSteps = ranks_ ? ranks_->sum(pointSteps_) : pointSteps_;
+    r.pointUpdatesPerSecond = r.wallSeconds > 0 ? pointSteps / r.wallSeconds : 0;
     r.dt = solver.dt();
     r.integrator = solver.integratorStats();
     r.outputDirectory = outDir_.string();
@@ -383,7 +479,7 @@ RunSummary RunOf<D>::finish() {
         r.coupling = windowAdvancer_->stats();
         r.couplingSummary = windowAdvancer_->summary();
     }
-    if (options_.quiet) return r;
+    if (options_.quiet || !root_) return r;
     std::printf("quicksand: done, %ld steps in %s (%.3g point updates/s); results in %s\n", r.steps,
                 formatSeconds(r.wallSeconds).c_str(), r.pointUpdatesPerSecond,
                 options_.writeFiles ? outDir_.string().c_str() : "(memory)");

@@ -9,6 +9,7 @@
 
 #include "core/Error.hpp"
 #include "io/Checkpoint.hpp"
+#include "parallel/GatherPoints.hpp"
 #include "solver/DoublePointSolver.hpp"
 
 namespace qs {
@@ -161,6 +162,21 @@ void getGridFields(const CheckpointData& data, const std::string& grid, Fields& 
     });
 }
 
+/// A copy of a grid's carried fields (forEachStateField) with each entry its owner's: zero where
+/// this rank does not own the node or cell, then added over the ranks.
+template <class Fields, class Owns>
+Fields ownersOnly(const Fields& fields, Index count, Owns&& owns, const Communicator& comm) {
+    Fields out = fields;
+    out.forEachStateField([&](std::vector<Real>& field, const FieldSpec&) {
+        const std::size_t per = field.size() / static_cast<std::size_t>(count);
+        for (Index k = 0; k < count; ++k)
+            if (!owns(k))
+                for (std::size_t c = 0; c < per; ++c) field[static_cast<std::size_t>(k) * per + c] = 0;
+        comm.sumInPlace(field);
+    });
+    return out;
+}
+
 }  // namespace
 
 // The water the checkpoint was written with: the semi-implicit step's size does not see K_L, so
@@ -192,17 +208,27 @@ void DoublePointSolver<D>::saveState(CheckpointData& data) const {
     data.putScalar("dt", dt_);
     data.putScalar("semi_implicit", config_.time.scheme == TimeScheme::SemiImplicit ? 1 : 0);
     data.putScalar("bulk_modulus", config_.liquid.bulkModulus);
-    putSet(data, "solid", solid_);
-    putSet(data, "liquid", liquid_);
-    putGridFields(data, "nodes", nodes_);
-    putGridFields(data, "cells", water_);
+    if (ranks_) {
+        // over MPI ranks: the points of every rank in rank order, each node and cell its owner's,
+        // the ranks' own sums added, as one rank writes them (rank 0 writes the file)
+        const Communicator& comm = ranks_->comm();
+        putSet(data, "solid", gatherPoints(solid_, comm));
+        putSet(data, "liquid", gatherPoints(liquid_, comm));
+        putGridFields(data, "nodes", ownersOnly(nodes_, grid_.numNodes(), [&](Index i) { return ranks_->ownsNode(i); }, comm));
+        putGridFields(data, "cells", ownersOnly(water_, grid_.numCells(), [&](Index c) { return ranks_->ownsCell(c); }, comm));
+    } else {
+        putSet(data, "solid", solid_);
+        putSet(data, "liquid", liquid_);
+        putGridFields(data, "nodes", nodes_);
+        putGridFields(data, "cells", water_);
+    }
     data.putScalar("cavity_is_water_strain", 1);
     data.put("gap", const_cast<InflowChamber<D>&>(chamber_).gaps());
     data.put("reservoir", reservoir_.saveState());
     data.put("integrator", integrator_->saveState());
-    data.put("ledger", std::vector<double>{cumulativeInflow_, chamber_.injectedVolume(), outflowVolume_,
+    data.put("ledger", std::vector<double>{cumulativeInflow_, sumOverRanks(chamber_.injectedVolume()), outflowVolume_,
                                            initialLiquidMass_, initialGapVolume_, gateFlux_,
-                                           gatePressure_, solidOutflowMass_});
+                                           gatePressure_, sumOverRanks(solidOutflowMass_)});
 }
 
 template <int D>
@@ -225,7 +251,6 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     // fields the registry dates (the solid's velocity gradient, the water's cavity) start at zero
     // from a checkpoint written before them
     getSet(data, "solid", solid_, D);
-    solid_.stressReturn.assign(solid_.size(), 0);  // per-step scratch, one per point of the checkpoint
     getSet(data, "liquid", liquid_, D);
     // Until 2026-12-05 a cavity was a strain of the mixture, which is n times the water's (n the
     // porosity): read as the water's, an old checkpoint's cavities in sand are a factor n too
@@ -246,6 +271,13 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     for (std::size_t p = 0; p < solid_.porosity.size(); ++p)
         QS_CHECK(solid_.porosity[p] > 0 && solid_.porosity[p] < 1,
                  "solid point " << p << " has porosity " << solid_.porosity[p] << ", outside (0, 1)" << kNotThisCase);
+    // over MPI ranks, on any number of them: every rank reads the whole checkpoint and keeps the
+    // points of its block (the grid's carried fields are whole on every rank)
+    if (ranks_) {
+        ranks_->keepOwned(solid_);
+        ranks_->keepOwned(liquid_);
+    }
+    solid_.stressReturn.assign(solid_.size(), 0);  // per-step scratch, one per point
     getGridFields(data, "nodes", nodes_);
     // the cells' pore-pressure gradient of the last step, which centres this step's cell pressures
     // (PorePressure.cpp)
@@ -265,8 +297,11 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     const auto& l = finiteValues(data, "ledger", 0);
     QS_CHECK(l.size() == 7 || l.size() == 8,
              "entry 'ledger' holds " << l.size() << " values, expected 8 (7 before the solid ledger)" << kNotThisCase);
+    // the ledger's sums that each rank keeps of its own (the chamber's slots, the sand out):
+    // the checkpoint's totals on rank 0, the others start from zero
+    const bool first = !ranks_ || ranks_->rank() == 0;
     cumulativeInflow_ = l.at(0);
-    chamber_.setInjectedVolume(l.at(1));
+    chamber_.setInjectedVolume(first ? l.at(1) : 0.0);
     outflowVolume_ = l.at(2);
     initialLiquidMass_ = l.at(3);
     initialGapVolume_ = l.at(4);
@@ -274,6 +309,7 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     gatePressure_ = l.at(6);
     solidOutflowMass_ = l.size() > 7 ? l.at(7) : 0.0;  // sand carried out: kept from 2026-12-04
     warnedSandOut_ = warnedSandOut_ || solidOutflowMass_ > 0;
+    if (!first) solidOutflowMass_ = 0;
     gateLaw_ = reservoir_.gateLaw(time_);
     checkHealth();  // a state that loads must be one a step can take (a cell per step at most, ...)
 }

@@ -21,6 +21,7 @@
 #include "boundary/BoundaryMasks.hpp"
 #include "grid/Grid.hpp"
 #include "io/CaseConfig.hpp"
+#include "parallel/RankShare.hpp"
 #include "solver/GridFields.hpp"
 
 namespace qs {
@@ -54,6 +55,9 @@ struct StepContext {
     const CellFilling& filling;
     const CellWater<D>& water;
     NodeFields<D>& nodes;
+    /// Over MPI ranks, this rank's share: the gate's sums take the nodes it owns, added over the
+    /// ranks (null on one rank)
+    const RankShare<D>* ranks = nullptr;
 };
 
 /// What a scheme's own work cost over the run (the semi-implicit pressure solve; zero for the

@@ -1,11 +1,14 @@
 # `quicksand` under mpirun (run by ctest as `cmake -P`, label mpi):
 #  1. `check` on 2 ranks prints the report and the decomposition once, not once per rank;
 #  2. a bad case on 2 ranks is refused once, naming file and key, with exit code 1;
-#  3. `run` on 2 ranks, which cannot yet step a decomposed column, is refused once, within the
-#     timeout (no rank waits for another), and leaves an earlier output/ untouched;
+#  3. `run` of a 1D column on 2 ranks, which cannot be cut, is refused once, within the timeout
+#     (no rank waits for another), and leaves an earlier output/ untouched;
 #  4. `check --ranks N` plans a decomposition without mpirun, and refuses more ranks than cells;
 #  5. `--version` names the MPI library;
-#  6. more ranks than the grid has columns for, under mpirun: refused once, naming the file.
+#  6. more ranks than the grid has columns for, under mpirun: refused once, naming the file;
+#  7. `run` of the random bed on 2 ranks writes one series.csv (one header, a row per output),
+#     fields.h5 and a checkpoint, and resumes on 3 ranks and on 1 (without mpirun) to the next
+#     outputs; the semi-implicit scheme, not yet decomposed, is refused once.
 # MPIEXEC: mpirun with its flags (--oversubscribe: more ranks than the 2 cores).
 separate_arguments(mpiexec UNIX_COMMAND "${MPIEXEC}")
 set(piping "${SOURCE_DIR}/cases/piping2D")
@@ -57,7 +60,7 @@ execute_process(COMMAND ${mpiexec} -np 2 "${QUICKSAND}" run "${WORK_DIR}/good"
 if(NOT rc EQUAL 1)
   message(FATAL_ERROR "mpirun -np 2 quicksand run: exit ${rc}, expected 1 (refused):\n${out}\n${err}")
 endif()
-count_matches("${err}" "not built yet" said)
+count_matches("${err}" "a 1D column \\(grid.dimension = 1\\) cannot be cut over 2" said)
 if(NOT said EQUAL 1)
   message(FATAL_ERROR "run on 2 ranks said its refusal ${said} times, expected once:\n${err}")
 endif()
@@ -90,4 +93,41 @@ execute_process(COMMAND ${mpiexec} -np 3 "${QUICKSAND}" check "${piping}" --set 
 count_matches("${err}" "piping2D/case.toml: the grid of 4 x 49 cells .* cannot be cut into 3 blocks" said)
 if(NOT rc EQUAL 1 OR NOT said EQUAL 1)
   message(FATAL_ERROR "mpirun -np 3 quicksand check of 4 columns: exit ${rc}, said ${said} times, expected 1 and once:\n${out}\n${err}")
+endif()
+
+# 7.
+file(MAKE_DIRECTORY "${WORK_DIR}/bed")
+file(COPY "${SOURCE_DIR}/cases/verification/random_bed/case.toml" DESTINATION "${WORK_DIR}/bed")
+set(short --set time.end=0.02 --set time.output_interval=0.01 --set grid.width=0.1488 --quiet)
+execute_process(COMMAND ${mpiexec} -np 2 "${QUICKSAND}" run "${WORK_DIR}/bed" ${short}
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
+if(NOT rc EQUAL 0)
+  message(FATAL_ERROR "mpirun -np 2 quicksand run of the random bed: exit ${rc}:\n${out}\n${err}")
+endif()
+foreach(f series.csv pipes.csv fields.h5 fields.xdmf checkpoint.h5 case.effective.toml)
+  if(NOT EXISTS "${WORK_DIR}/bed/output/${f}")
+    message(FATAL_ERROR "a run on 2 ranks did not write output/${f}")
+  endif()
+endforeach()
+file(STRINGS "${WORK_DIR}/bed/output/series.csv" lines)
+list(LENGTH lines n)
+count_matches("${lines}" "time" headers)
+if(NOT n EQUAL 4 OR NOT headers EQUAL 1)  # the header, t = 0, 0.01, 0.02
+  message(FATAL_ERROR "series.csv of a run on 2 ranks has ${n} lines and ${headers} headers, expected 4 and 1:\n${lines}")
+endif()
+execute_process(COMMAND ${mpiexec} -np 3 "${QUICKSAND}" run "${WORK_DIR}/bed" ${short} --set time.end=0.03 --resume
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 300)
+execute_process(COMMAND "${QUICKSAND}" run "${WORK_DIR}/bed" ${short} --set time.end=0.04 --resume
+                RESULT_VARIABLE rc1 OUTPUT_VARIABLE out1 ERROR_VARIABLE err1 TIMEOUT 300)
+file(STRINGS "${WORK_DIR}/bed/output/series.csv" lines)
+list(LENGTH lines n)
+if(NOT rc EQUAL 0 OR NOT rc1 EQUAL 0 OR NOT n EQUAL 6)
+  message(FATAL_ERROR "the 2 ranks' checkpoint resumed on 3 (exit ${rc}) and then on 1 (exit ${rc1}): series.csv has "
+                      "${n} lines, expected 6:\n${err}\n${err1}\n${lines}")
+endif()
+execute_process(COMMAND ${mpiexec} -np 2 "${QUICKSAND}" run "${WORK_DIR}/bed" ${short} --set time.scheme=\"semi_implicit\"
+                RESULT_VARIABLE rc OUTPUT_VARIABLE out ERROR_VARIABLE err TIMEOUT 120)
+count_matches("${err}" "semi_implicit\" does not run on MPI ranks yet" said)
+if(NOT rc EQUAL 1 OR NOT said EQUAL 1)
+  message(FATAL_ERROR "the semi-implicit scheme on 2 ranks: exit ${rc}, said ${said} times, expected 1 and once:\n${err}")
 endif()

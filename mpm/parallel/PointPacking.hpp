@@ -1,0 +1,43 @@
+#pragma once
+// Points packed for another rank: every field its set's registry lists (points/PointSet.hpp,
+// forEachField), in that order, integers as doubles (exact below 2^53). PointMigration and
+// RankShare's ghost copies send points so.
+#include <cstddef>
+#include <type_traits>
+#include <vector>
+
+#include "points/PointSet.hpp"
+
+namespace qs {
+
+/// Values a packed point takes.
+template <class Set>
+std::size_t packedWidth(const Set& set) {
+    std::size_t w = 0;
+    set.forEachField([&](const auto&, const FieldSpec& f) { w += static_cast<std::size_t>(f.components); });
+    return w;
+}
+
+/// Appends point p's fields to out.
+template <class Set>
+void packPoint(const Set& set, std::size_t p, std::vector<double>& out) {
+    set.forEachField([&](const auto& field, const FieldSpec& f) {
+        for (int c = 0; c < f.components; ++c) out.push_back(static_cast<double>(field[p * f.components + c]));
+    });
+}
+
+/// Appends the `count` points packed in `in` to the set (in their order).
+template <class Set>
+void unpackPoints(Set& set, const std::vector<double>& in, std::size_t width) {
+    const std::size_t count = width > 0 ? in.size() / width : 0;
+    const std::size_t first = set.size();
+    resizePoints(set, first + count);
+    std::size_t at = 0;
+    for (std::size_t q = 0; q < count; ++q)
+        set.forEachField([&](auto& field, const FieldSpec& f) {
+            using T = typename std::decay_t<decltype(field)>::value_type;
+            for (int c = 0; c < f.components; ++c) field[(first + q) * f.components + c] = static_cast<T>(in[at++]);
+        });
+}
+
+}  // namespace qs

@@ -1,0 +1,215 @@
+// The decomposed step (parallel/RankShare.hpp) against one rank's, under mpirun on 2, 3 and 4
+// ranks: the random bed of the piping tests (non-uniform, with flow through it and water
+// spilling over the rim every step) in plane strain, in axisymmetry and in 3D, each rank also
+// running the whole column alone in the same process. After 200 steps every point of the ranks'
+// run is the one-rank run's to round-off, and so are the column's measurements; two runs on the
+// same ranks give the same bytes.
+//
+// The bed is widened to 16 cells (2D) so that a block and its window of ghost points do not
+// cover the grid: a phase that read a cell or node beyond what the ghosts carry, a sum taken over
+// ghosts, or a weir that decided on one rank's points alone would show here as an O(1) error.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "io/CaseLoader.hpp"
+#include "parallel/Communicator.hpp"
+#include "parallel/GatherPoints.hpp"
+#include "reservoir/ReservoirModel.hpp"
+#include "solver/DoublePointSolver.hpp"
+
+using namespace qs;
+
+namespace {
+
+constexpr int kSteps = 200;
+/// Relative to each quantity's scale over the column. Issue 41 asks for 1e-10 after 200 steps;
+/// these runs reach 2e-13 at worst (on 2, 3 and 4 ranks, 2026-12-07), so the guard is 1e-12: the
+/// window of ghost points one layer short (4) put the axisymmetric bed on 3 ranks 3e-10 off.
+constexpr double kRoundOff = 1e-12;
+
+CaseConfig randomBed(const std::vector<std::string>& sets) {
+    std::vector<CaseOverride> overrides;
+    for (const auto& s : sets) overrides.push_back(parseOverride(s));
+    CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/random_bed", overrides);
+    c.time.scheme = TimeScheme::Explicit;
+    return c;
+}
+
+/// A point's state as the comparison reads it, sorted by place (rows of points first by height
+/// to 1 nm, then across): the two runs store their points in different orders.
+struct PointRow {
+    std::vector<double> v;
+};
+
+template <int D, class Set>
+std::vector<PointRow> rows(const Set& set, bool solid) {
+    std::vector<PointRow> out;
+    for (std::size_t p = 0; p < set.size(); ++p) {
+        PointRow r;
+        for (int d = 0; d < D; ++d) r.v.push_back(set.x[p * D + d]);
+        for (int d = 0; d < D; ++d) r.v.push_back(set.v[p * D + d]);
+        if constexpr (std::is_same_v<Set, SolidPoints<D>>) {
+            for (int k = 0; k < 6; ++k) r.v.push_back(set.stress[p * 6 + k]);
+            r.v.push_back(set.porosity[p]);
+        } else {
+            r.v.push_back(set.pressure[p]);
+        }
+        (void)solid;
+        out.push_back(r);
+    }
+    std::sort(out.begin(), out.end(), [](const PointRow& a, const PointRow& b) {
+        const double za = std::round(a.v[D - 1] * 1e9), zb = std::round(b.v[D - 1] * 1e9);
+        if (za != zb) return za < zb;
+        for (int d = 0; d < D - 1; ++d)
+            if (a.v[d] != b.v[d]) return a.v[d] < b.v[d];
+        return false;
+    });
+    return out;
+}
+
+/// The largest difference of each value over the points, relative to the field's largest size
+/// (a position's and a velocity's over all their components: the lateral velocity of a column in
+/// upward seepage is round-off of the vertical one's size).
+template <int D>
+void expectSamePoints(const std::vector<PointRow>& one, const std::vector<PointRow>& many, const char* what,
+                      double tolerance) {
+    ASSERT_EQ(one.size(), many.size()) << what << " points";
+    if (one.empty()) return;
+    const std::size_t width = one[0].v.size();
+    auto field = [](std::size_t k) { return k < D ? std::pair<std::size_t, std::size_t>{0, D}
+                                         : k < 2 * D ? std::pair<std::size_t, std::size_t>{D, 2 * D}
+                                                     : std::pair<std::size_t, std::size_t>{k, k + 1}; };
+    for (std::size_t k = 0; k < width; ++k) {
+        double scale = 0, worst = 0;
+        std::size_t at = 0;
+        for (std::size_t p = 0; p < one.size(); ++p)
+            for (std::size_t j = field(k).first; j < field(k).second; ++j) scale = std::max(scale, std::abs(one[p].v[j]));
+        for (std::size_t p = 0; p < one.size(); ++p) {
+            const double d = std::abs(one[p].v[k] - many[p].v[k]);
+            if (d > worst) worst = d, at = p;
+        }
+        EXPECT_LE(worst, tolerance * std::max(scale, 1e-300))
+            << what << " value " << k << ": point " << at << " differs by " << worst << " (scale " << scale << ")";
+    }
+}
+
+void expectClose(double one, double many, double scale, const char* what, double tolerance = kRoundOff) {
+    EXPECT_LE(std::abs(one - many), tolerance * std::max(std::abs(scale), 1e-300))
+        << what << ": one rank " << one << ", the ranks " << many;
+}
+
+template <int D>
+struct Column {
+    std::unique_ptr<ReservoirModel> reservoir;
+    std::unique_ptr<DoublePointSolver<D>> solver;
+    Column(const CaseConfig& c, const Communicator* ranks)
+        : reservoir(makeReservoirModel(c)), solver(std::make_unique<DoublePointSolver<D>>(c, *reservoir, ranks)) {}
+};
+
+/// One rank's run (on rank 0, beside its share of the ranks' run) and the ranks' run of the same
+/// case, `steps` each, compared; with `untilSpilled`, on until the weir has spilled for
+/// `steps` steps.
+template <int D>
+void compareWithOneRank(const CaseConfig& config, int steps = kSteps, bool untilSpilled = false) {
+    const Communicator& world = Communicator::world();
+    const bool root = world.rank() == 0;
+    std::unique_ptr<Column<D>> one = root ? std::make_unique<Column<D>>(config, nullptr) : nullptr;
+    Column<D> many(config, &world);
+    ASSERT_NE(many.solver->rankShare(), nullptr);
+    int after = 0;
+    for (long k = 0; after < steps; ++k) {
+        if (one) one->solver->step();
+        many.solver->step();
+        const bool spilled = root && one->solver->columnState().cumulativeOutflow > 0;
+        if (!untilSpilled || world.any(spilled)) ++after;
+        ASSERT_LT(k, 40000) << "the weir never spilled";
+    }
+    const ColumnState b = many.solver->columnState();  // collective
+    const auto pb = many.solver->profile();
+    const SolidPoints<D> solid = gatherPoints(many.solver->solid(), world);
+    const LiquidPoints<D> liquid = gatherPoints(many.solver->liquid(), world);
+    // the points are shared out: each rank holds its block's
+    const std::vector<double> counts = world.allGather(double(many.solver->solid().size()));
+    for (double n : counts) EXPECT_GT(n, 0) << "a rank without sand: the bed is not cut";
+    if (!root) return;
+
+    const ColumnState a = one->solver->columnState();
+    EXPECT_EQ(a.solidPoints, b.solidPoints);
+    EXPECT_EQ(a.liquidPoints, b.liquidPoints);
+    if (untilSpilled) EXPECT_GT(a.cumulativeOutflow, 0) << "the weir must have spilled for the test to see it";
+    expectClose(a.gateFlux, b.gateFlux, a.gateFlux, "gate flux");
+    expectClose(a.gatePressure, b.gatePressure, a.gatePressure, "gate pressure");
+    expectClose(a.waterSurface, b.waterSurface, a.waterSurface, "water surface");
+    expectClose(a.sandSurface, b.sandSurface, a.sandSurface, "sand surface");
+    expectClose(a.cumulativeInflow, b.cumulativeInflow, a.cumulativeInflow, "inflow");
+    expectClose(a.cumulativeOutflow, b.cumulativeOutflow, a.cumulativeInflow, "outflow");
+    expectClose(a.injectedVolume, b.injectedVolume, a.cumulativeInflow, "injected");
+    // the residual is a difference of the stored water's volume: round-off of that volume
+    expectClose(a.ledgerResidual, b.ledgerResidual, a.liquidMass / config.liquid.density, "ledger residual");
+    expectClose(a.liquidMass, b.liquidMass, a.liquidMass, "liquid mass");
+    expectClose(a.gradient, b.gradient, 1.0, "gradient");
+    ASSERT_EQ(a.monitorFlux.size(), b.monitorFlux.size());
+    for (std::size_t m = 0; m < a.monitorFlux.size(); ++m)
+        expectClose(a.monitorFlux[m], b.monitorFlux[m], a.gateFlux / config.grid.crossSectionArea, "monitor flux");
+    const auto pa = one->solver->profile();
+    ASSERT_EQ(pa.size(), pb.size());
+    double pScale = 0, sScale = 0;
+    for (const auto& r : pa) pScale = std::max(pScale, std::abs(r.porePressure)), sScale = std::max(sScale, std::abs(r.verticalStress));
+    for (std::size_t r = 0; r < pa.size(); ++r) {
+        expectClose(pa[r].porePressure, pb[r].porePressure, pScale, "row pore pressure");
+        expectClose(pa[r].verticalStress, pb[r].verticalStress, sScale, "row vertical stress");
+        EXPECT_EQ(pa[r].solidCount, pb[r].solidCount) << "row " << r;
+        EXPECT_EQ(pa[r].liquidCount, pb[r].liquidCount) << "row " << r;
+    }
+
+    // every point
+    expectSamePoints<D>(rows<D>(one->solver->solid(), true), rows<D>(solid, true), "solid", kRoundOff);
+    expectSamePoints<D>(rows<D>(one->solver->liquid(), false), rows<D>(liquid, false), "liquid", kRoundOff);
+}
+
+TEST(ColumnOnRanks, ThePlaneRandomBedStepsAsOnOneRank) {
+    compareWithOneRank<2>(randomBed({"grid.width=0.1488"}));  // 16 cells
+}
+
+TEST(ColumnOnRanks, TheAxisymmetricRandomBedStepsAsOnOneRank) {
+    // the radius cut: the ranks' rings differ in area, the axis and the wall each on one rank
+    compareWithOneRank<2>(randomBed({"grid.width=0.1488", "grid.geometry=\"axisymmetric\"",
+                                     "grid.cross_section_area=0.06955938524"}));
+}
+
+TEST(ColumnOnRanks, The3DRandomBedStepsAsOnOneRank) {
+    // 6 x 6 columns: on 4 ranks 2 x 2 blocks, whose common edge's nodes have four holders
+    compareWithOneRank<3>(randomBed({"grid.dimension=3", "grid.width=0.0558", "grid.cross_section_area=0.00311364"}));
+}
+
+TEST(ColumnOnRanks, UGimpStepsAsOnOneRank) {
+    compareWithOneRank<2>(randomBed({"grid.width=0.1488", "grid.shape_functions=\"gimp\""}));
+}
+
+TEST(ColumnOnRanks, TheWeirSpillsAsOnOneRank) {
+    // the water rises to the rim and spills (a 0.2 s climb), then 200 steps more
+    compareWithOneRank<2>(randomBed({"grid.width=0.1488"}), kSteps, true);
+}
+
+TEST(ColumnOnRanks, TheSameRanksGiveTheSameBytes) {
+    const Communicator& world = Communicator::world();
+    const CaseConfig config = randomBed({"grid.width=0.1488"});
+    Column<2> first(config, &world), second(config, &world);
+    for (int k = 0; k < 50; ++k) {
+        first.solver->step();
+        second.solver->step();
+    }
+    const auto& a = first.solver->liquid();
+    const auto& b = second.solver->liquid();
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_TRUE(a.x == b.x && a.v == b.v && a.pressure == b.pressure);
+    EXPECT_TRUE(first.solver->solid().stress == second.solver->solid().stress);
+    EXPECT_EQ(first.solver->columnState().gateFlux, second.solver->columnState().gateFlux);
+}
+
+}  // namespace
