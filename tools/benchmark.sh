@@ -26,6 +26,13 @@
 #                                      BM_Column1D: the 1D column's tridiagonal solve against Eigen's.
 #                                      About 45 minutes (SCHEMES_END=10 for 10 s runs, SCHEMES_END_2D
 #                                      for the 2D rows alone)
+#   bash tools/benchmark.sh --ranks    MPI ranks against OpenMP threads (issue 41): piping2D at 3.1 mm,
+#                                      piping3D at 6.2 mm and cases/benchmark/consolidation3d, each
+#                                      for RANKS_END s of simulated time (default 0.05; piping3D 0.01)
+#                                      on 1 rank x 1 thread, 1 rank x 2 threads and 2 ranks x 1
+#                                      thread (mpirun; --oversubscribe and --allow-run-as-root where
+#                                      needed): wall time and the ratio 2 ranks / 2 threads, which
+#                                      issue 41 asks to be at most 1.15
 # Speed is measured here, never by timed tests.
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
@@ -41,6 +48,36 @@ if [[ "$mode" == "--consolidation3d" ]]; then
         echo "== cases/benchmark/consolidation3d, OMP_NUM_THREADS=$threads"
         OMP_NUM_THREADS=$threads "$build_dir/mpm/quicksand" run "$work/case" | grep -E "^quicksand: done"
     done
+    exit 0
+fi
+
+if [[ "$mode" == "--ranks" ]]; then
+    work="$(mktemp -d)"
+    trap 'rm -rf "$work"' EXIT
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_btl_vader_single_copy_mechanism=none
+    end="${RANKS_END:-0.05}"
+    seconds() {  # label, launcher..., then quicksand's arguments: prints the wall time in s
+        local start=$EPOCHREALTIME
+        "$@" >/dev/null 2>"$work/err" || { echo "failed: $(head -c 300 "$work/err")" >&2; echo nan; return 0; }
+        python3 -c "print($EPOCHREALTIME - $start)"
+    }
+    bench() {  # label, case directory, end, then --set overrides
+        local label="$1" dir="$2" t="$3"; shift 3
+        local args=(--set time.end="$t" --set time.output_interval="$t" --set output.fields=false
+                    --set time.checkpoint_interval=0 --quiet "$@")
+        rm -rf "$work/a" "$work/b" "$work/c"; cp -r "$dir" "$work/a"; cp -r "$dir" "$work/b"; cp -r "$dir" "$work/c"
+        rm -rf "$work"/[abc]/output
+        local one two ranks
+        one=$(OMP_NUM_THREADS=1 seconds "$build_dir/mpm/quicksand" run "$work/a" "${args[@]}")
+        two=$(OMP_NUM_THREADS=2 seconds "$build_dir/mpm/quicksand" run "$work/b" "${args[@]}")
+        ranks=$(OMP_NUM_THREADS=1 seconds mpirun --oversubscribe -np 2 "$build_dir/mpm/quicksand" run "$work/c" "${args[@]}")
+        printf "%-32s %8s s  1x1 %7.2f s  1x2 %7.2f s  2x1 %7.2f s  2x1 / 1x2 = %.2f\n" "$label" "$t" "$one" "$two" \
+            "$ranks" "$(python3 -c "print($ranks / $two)")"
+    }
+    echo "== ranks against threads (simulated time, wall time of 1 rank x 1 thread, 1 x 2, 2 ranks x 1)"
+    bench "piping2D, 3.1 mm" cases/piping2D "$end" --set grid.cell_size=0.0031
+    bench "piping3D, 6.2 mm" cases/piping3D "${RANKS_END_3D:-0.01}" --set grid.cell_size=0.0062
+    bench "consolidation3d" cases/benchmark/consolidation3d "${RANKS_END_3D:-0.01}"
     exit 0
 fi
 

@@ -180,10 +180,11 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
         Real pw = 0, w = 0;
         for (Index k = 0; k < perRow; ++k) {
             const Index c = r * perRow + k;
+            // every point a rank holds is its own; a cell's water is its owner's
+            row.liquidCount += static_cast<int>(cells_.liquidStart[c + 1] - cells_.liquidStart[c]);
             if (!ownsCell(c)) continue;
             pw += water_.pressure[c] * water_.weight[c];
             w += water_.weight[c];
-            row.liquidCount += static_cast<int>(cells_.liquidStart[c + 1] - cells_.liquidStart[c]);
         }
         row.porePressure = pw;  // the weighted sum until the ranks' are added (below)
         row.filterVelocity = w;
@@ -283,8 +284,12 @@ SandCells DoublePointSolver<D>::sandCells() const {
     const Index cells = grid_.numCells();
     s.state.assign(cells, CellSand::None);
     s.porosity.assign(cells, std::nan(""));
+    if (ranks_) {
+        gatherSandCells(s);
+        return s;
+    }
     for (Index c = 0; c < cells; ++c) {
-        if (cells_.solidStart[c] == cells_.solidStart[c + 1] || !ownsCell(c)) continue;
+        if (cells_.solidStart[c] == cells_.solidStart[c + 1]) continue;
         s.state[c] = sand_.fluidised[c] ? CellSand::Fluidised : CellSand::Solid;
         s.porosity[c] = sand_.porosity[c];
     }
@@ -296,7 +301,6 @@ SandCells DoublePointSolver<D>::sandCells() const {
     const Index columns = s.columns();
     s.baseFlux.assign(columns, 0.0);
     for (Index k = 0; k < columns; ++k) {
-        if (!ownsColumn(k)) continue;
         const Index c = grid_.columnCell(k, sandBottomRow_);
         Real q = 0, weight = 0;
         grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
@@ -310,39 +314,61 @@ SandCells DoublePointSolver<D>::sandCells() const {
     // the sand's top per column: where a stripe heaves against its neighbours, or a boil rises
     s.surface.assign(columns, std::nan(""));
     for (Index k = 0; k < columns; ++k) {
-        if (!ownsColumn(k)) continue;
         const ColumnSurface top = sandSurfaceOfColumn(grid_, solid_, cells_.solidStart, k, config_.points.solidPerCell);
         if (top.row >= 0) s.surface[k] = top.top;
     }
-    if (ranks_) gatherSandCells(s);
     return s;
 }
 
-/// Over MPI ranks: every cell's and column's entry from the rank that owns it, on every rank
-/// (others' entries are added as zeros; "no sand" travels as -1 and returns as NaN).
+/// sandCells over MPI ranks, the same on every rank. A cell holds sand where any rank's points
+/// are filed in it (after the weir re-files the points by where they are, a point may sit in a
+/// cell its rank does not own); its state and porosity are its owner's, computed in the step. A
+/// column's surface is the top of its highest sand cell's points, over the ranks; the water
+/// through the filter its owner's nodes'.
 template <int D>
 void DoublePointSolver<D>::gatherSandCells(SandCells& s) const {
-    const std::size_t cells = s.state.size(), columns = s.baseFlux.size();
-    std::vector<Real> all(2 * cells + 2 * columns, 0.0);
-    for (std::size_t c = 0; c < cells; ++c) {
-        if (!ownsCell(static_cast<Index>(c))) continue;
-        all[c] = static_cast<Real>(s.state[c]);
-        all[cells + c] = std::isnan(s.porosity[c]) ? -1.0 : s.porosity[c];
+    const Index cells = grid_.numCells(), columns = s.columns();
+    std::vector<Real> all(static_cast<std::size_t>(3 * cells + columns), 0.0);
+    for (Index c = 0; c < cells; ++c) {
+        all[c] = static_cast<Real>(cells_.solidStart[c + 1] - cells_.solidStart[c]);
+        if (!ownsCell(c)) continue;
+        all[cells + c] = sand_.fluidised[c] ? 2 : 1;
+        all[2 * cells + c] = sand_.porosity[c];
     }
-    for (std::size_t k = 0; k < columns; ++k) {
-        if (!ownsColumn(static_cast<Index>(k))) continue;
-        all[2 * cells + k] = s.baseFlux[k];
-        all[2 * cells + columns + k] = std::isnan(s.surface[k]) ? -1.0 : s.surface[k];
+    s.baseFlux.assign(columns, 0.0);
+    for (Index k = 0; k < columns; ++k) {
+        if (!ownsColumn(k)) continue;
+        const Index c = grid_.columnCell(k, sandBottomRow_);
+        Real q = 0, weight = 0;
+        grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
+            if ((corner >> (D - 1)) & 1) return;  // an upper node
+            const Real w = grid_.cellShare(c, corner);
+            q += w * nodes_.porosity[i] * (nodes_.velL[i * D + D - 1] - nodes_.fedWeight[i * D + D - 1] * nodes_.velS[i * D + D - 1]);
+            weight += w;
+        });
+        all[3 * cells + k] = q / weight * grid_.cellVolume(c) / grid_.h();
     }
     sumOverRanks(all);
-    for (std::size_t c = 0; c < cells; ++c) {
-        s.state[c] = static_cast<CellSand>(static_cast<int>(all[c]));
-        s.porosity[c] = all[cells + c] < 0 ? std::nan("") : all[cells + c];
+    for (Index c = 0; c < cells; ++c) {
+        const bool sand = all[c] > 0;
+        s.state[c] = sand ? static_cast<CellSand>(static_cast<int>(all[cells + c])) : CellSand::None;
+        s.porosity[c] = sand ? all[2 * cells + c] : std::nan("");
     }
-    for (std::size_t k = 0; k < columns; ++k) {
-        s.baseFlux[k] = all[2 * cells + k];
-        s.surface[k] = all[2 * cells + columns + k] < 0 ? std::nan("") : all[2 * cells + columns + k];
+    for (Index k = 0; k < columns; ++k) s.baseFlux[k] = all[3 * cells + k];
+    // the surfaces: the highest row with sand over the ranks, then the top of its points
+    std::vector<Real> row(columns), top(columns);
+    for (Index k = 0; k < columns; ++k)
+        row[k] = static_cast<Real>(sandSurfaceOfColumn(grid_, solid_, cells_.solidStart, k, config_.points.solidPerCell).row);
+    std::vector<Real> highest = row;
+    ranks_->comm().maxInPlace(highest);
+    for (Index k = 0; k < columns; ++k) {
+        const ColumnSurface mine = sandSurfaceOfColumn(grid_, solid_, cells_.solidStart, k, config_.points.solidPerCell);
+        top[k] = (mine.row >= 0 && mine.row == static_cast<Index>(highest[k])) ? mine.top : -HUGE_VAL;
     }
+    ranks_->comm().maxInPlace(top);
+    s.surface.assign(columns, std::nan(""));
+    for (Index k = 0; k < columns; ++k)
+        if (highest[k] >= 0) s.surface[k] = top[k];
 }
 
 template ColumnState DoublePointSolver<1>::columnState() const;

@@ -104,6 +104,7 @@ void DoublePointSolver<D>::exchangePoints() {
     if (!ranks_) return;
     ranks_->exchange(solid_);
     ranks_->exchange(liquid_);
+    ranks_->shareCarried(water_, nodes_);
     solid_.stressReturn.resize(solid_.size());  // per-step scratch beside the registry
 }
 
@@ -220,13 +221,15 @@ Real DoublePointSolver<D>::sandSurface() const {
 // rim left no water "above the sand" and the surface read 0 (piping3D, 2026-12-06).
 template <int D>
 Real DoublePointSolver<D>::waterSurface() const {
-    Real volume = 0;  // the points': each rank's own, added over the ranks
+    // over MPI ranks the points' volumes are each rank's own, added over the ranks; the chamber's
+    // gaps are every slot's on every rank (InflowChamber::shareGaps)
+    Real volume = ranks_ ? 0.0 : chamber_.gapVolume(grid_);
     for (std::size_t p = 0; p < liquid_.size(); ++p)
         volume += liquid_.mass[p] / config_.liquid.density * (1 + liquid_.cavity[p]);
     for (std::size_t p = 0; p < solid_.size(); ++p)
         volume += solid_.mass[p] / materials_[solid_.material[p]].grainDensity;
-    // the chamber's gaps are every slot's on every rank (InflowChamber::shareGaps)
-    return (chamber_.gapVolume(grid_) + sumOverRanks(volume)) / grid_.crossSection();
+    if (ranks_) volume = chamber_.gapVolume(grid_) + sumOverRanks(volume);
+    return volume / grid_.crossSection();
 }
 
 template class DoublePointSolver<1>;

@@ -3,6 +3,7 @@
 // liquid points' weights V*, the water a node's cells hold, and the check that the overflow's
 // rows still hold their water (physics.md section 2, free surface).
 #include <algorithm>
+#include <sstream>
 
 #include "boundary/Overflow.hpp"
 #include "solver/DoublePointSolver.hpp"
@@ -120,12 +121,15 @@ void DoublePointSolver<D>::classifyCells() {
         }
         const Real rowsMeasured = static_cast<Real>(overflowRow_ - lowRow);
         const Real missing = std::max(Real(0), room - grains - water) / room * rowsMeasured;  // in rows
-        QS_CHECK(missing <= 1,
-                 "the water fell below the overflow level column.overflow_level = "
-                     << *config_.column.overflowLevel << " m at t = " << time_ << " s: the top "
-                     << (overflowRow_ - lowRow) << " rows of cells under it lack " << missing
-                     << " rows of water. The overflow holds the water's surface at its level, so the reservoir's "
-                        "head must keep the column full to it");
+        if (!(missing <= 1)) {
+            std::ostringstream m;
+            m << "the water fell below the overflow level column.overflow_level = " << *config_.column.overflowLevel
+              << " m at t = " << time_ << " s: the top " << (overflowRow_ - lowRow) << " rows of cells under it lack "
+              << missing << " rows of water. The overflow holds the water's surface at its level, so the reservoir's "
+                            "head must keep the column full to it";
+            if (ranks_) throw SharedError(m.str());  // every rank has it: the water is summed over them
+            throw Error(m.str());
+        }
     }
 }
 

@@ -444,6 +444,8 @@ void RunOf<D>::advanceTo(double end) {
             std::ostringstream m;
             m << e.what() << ". The last good checkpoint, at t = " << lastCheckpoint_ << " s, is "
               << checkpointPath_.string();
+            // one that every rank met alike stays said once (SharedError)
+            if (dynamic_cast<const SharedError*>(&e)) throw SharedError(m.str());
             throw Error(m.str());
         }
         pointSteps_ += double(solver.stepCount() - before) * double(solver.solid().size() + solver.liquid().size());
