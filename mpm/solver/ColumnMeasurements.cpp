@@ -272,6 +272,22 @@ std::vector<CellRow> DoublePointSolver<D>::profile() const {
     return out;
 }
 
+namespace {
+/// m3/s through a column's base cell c: q = n (v_L - w v_S) at its lower nodes, each weighted by
+/// its share of the cell's lower face, times the face's area (sandCells says why)
+template <int D>
+Real baseFlux(const Grid<D>& grid, const NodeFields<D>& nodes, Index c) {
+    Real q = 0, weight = 0;
+    grid.forEachNodeOfCell(c, [&](Index i, int corner) {
+        if ((corner >> (D - 1)) & 1) return;  // an upper node
+        const Real w = grid.cellShare(c, corner);
+        q += w * nodes.porosity[i] * (nodes.velL[i * D + D - 1] - nodes.fedWeight[i * D + D - 1] * nodes.velS[i * D + D - 1]);
+        weight += w;
+    });
+    return q / weight * grid.cellVolume(c) / grid.h();
+}
+}  // namespace
+
 template <int D>
 SandCells DoublePointSolver<D>::sandCells() const {
     SandCells s;
@@ -301,15 +317,7 @@ SandCells DoublePointSolver<D>::sandCells() const {
     const Index columns = s.columns();
     s.baseFlux.assign(columns, 0.0);
     for (Index k = 0; k < columns; ++k) {
-        const Index c = grid_.columnCell(k, sandBottomRow_);
-        Real q = 0, weight = 0;
-        grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
-            if ((corner >> (D - 1)) & 1) return;  // an upper node
-            const Real w = grid_.cellShare(c, corner);
-            q += w * nodes_.porosity[i] * (nodes_.velL[i * D + D - 1] - nodes_.fedWeight[i * D + D - 1] * nodes_.velS[i * D + D - 1]);
-            weight += w;
-        });
-        s.baseFlux[k] = q / weight * grid_.cellVolume(c) / grid_.h();
+        s.baseFlux[k] = baseFlux(grid_, nodes_, grid_.columnCell(k, sandBottomRow_));
     }
     // the sand's top per column: where a stripe heaves against its neighbours, or a boil rises
     s.surface.assign(columns, std::nan(""));
@@ -338,15 +346,7 @@ void DoublePointSolver<D>::gatherSandCells(SandCells& s) const {
     s.baseFlux.assign(columns, 0.0);
     for (Index k = 0; k < columns; ++k) {
         if (!ownsColumn(k)) continue;
-        const Index c = grid_.columnCell(k, sandBottomRow_);
-        Real q = 0, weight = 0;
-        grid_.forEachNodeOfCell(c, [&](Index i, int corner) {
-            if ((corner >> (D - 1)) & 1) return;  // an upper node
-            const Real w = grid_.cellShare(c, corner);
-            q += w * nodes_.porosity[i] * (nodes_.velL[i * D + D - 1] - nodes_.fedWeight[i * D + D - 1] * nodes_.velS[i * D + D - 1]);
-            weight += w;
-        });
-        all[3 * cells + k] = q / weight * grid_.cellVolume(c) / grid_.h();
+        all[3 * cells + k] = baseFlux(grid_, nodes_, grid_.columnCell(k, sandBottomRow_));
     }
     sumOverRanks(all);
     for (Index c = 0; c < cells; ++c) {
