@@ -50,11 +50,11 @@ inline CaseConfig loadVerificationCase(const std::string& name) {
     return c;
 }
 
-/// Runs a loaded case in memory, keeping every output. With `seen` (2D/3D), only until it holds
-/// for the cells' sand state at an output: a test that measures when something first happens
-/// stops watching there, and what the run does afterwards (a pipe blowing out over the rim)
-/// neither costs time nor ends it.
-inline CaseRun runConfigUntil(const CaseConfig& config, const std::function<bool(const SandCells&)>& seen) {
+/// Runs a loaded case in memory, keeping every output, until `seen` holds for what was kept so
+/// far (checked after each output): a test that measures when something first happens stops
+/// watching there, and what the run does afterwards (a pipe blowing out over the rim) neither
+/// costs time nor ends it.
+inline CaseRun runConfigWhile(const CaseConfig& config, const std::function<bool(const CaseRun&)>& seen) {
     struct Seen {};
     CaseRun run;
     run.config = config;
@@ -68,13 +68,19 @@ inline CaseRun runConfigUntil(const CaseConfig& config, const std::function<bool
     options.onOutput = [&](const ColumnState& s, const std::vector<CellRow>& rows) {  // after onPipes
         run.series.push_back(s);
         run.profiles.push_back(rows);
-        if (seen && !run.cells.empty() && seen(run.cells.back())) throw Seen{};
+        if (seen && seen(run)) throw Seen{};
     };
     try {
         run.summary = runCase(run.config, options);
     } catch (const Seen&) {
     }
     return run;
+}
+
+/// As runConfigWhile, watching the cells' sand state (2D/3D) at each output.
+inline CaseRun runConfigUntil(const CaseConfig& config, const std::function<bool(const SandCells&)>& seen) {
+    if (!seen) return runConfigWhile(config, {});
+    return runConfigWhile(config, [&](const CaseRun& run) { return !run.cells.empty() && seen(run.cells.back()); });
 }
 
 /// Runs a loaded case in memory to its end, keeping every output.
