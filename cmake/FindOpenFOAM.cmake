@@ -28,7 +28,11 @@
 #                                libOpenFOAM.so is loaded
 #   OPENFOAM_TUTORIALS_DIR       the tutorials (FOAM_TUTORIALS, Debian's openfoam-examples, or the
 #                                part of them setup.sh unpacks: incompressible/icoFoam/cavity)
+#   OPENFOAM_MPI_PSTREAM_DIR     the folder of the Open MPI libPstream.so (Debian:
+#                                /usr/lib/openmpi-system), for a line decomposed over MPI ranks;
+#                                empty where there is none
 #   OPENFOAM_BLOCKMESH           the blockMesh program
+#   OPENFOAM_DECOMPOSEPAR, OPENFOAM_RECONSTRUCTPAR   decomposePar and reconstructPar
 #   OPENFOAM_INCLUDE_DIRS        the include folders (also on the targets)
 #   OPENFOAM_DEFINITIONS         WM_DP WM_LABEL_SIZE=32 NoRepository OPENFOAM=1912
 #
@@ -224,7 +228,19 @@ if(_of_reason STREQUAL "")
   endif()
   find_program(OPENFOAM_BLOCKMESH blockMesh HINTS "$ENV{FOAM_APPBIN}" /usr/bin
                DOC "OpenFOAM's blockMesh")
-  mark_as_advanced(OPENFOAM_BLOCKMESH)
+  find_program(OPENFOAM_DECOMPOSEPAR decomposePar HINTS "$ENV{FOAM_APPBIN}" /usr/bin
+               DOC "OpenFOAM's decomposePar")
+  find_program(OPENFOAM_RECONSTRUCTPAR reconstructPar HINTS "$ENV{FOAM_APPBIN}" /usr/bin
+               DOC "OpenFOAM's reconstructPar")
+  # the MPI libPstream: Debian's beside the serial one; a user's environment names its MPI
+  set(OPENFOAM_MPI_PSTREAM_DIR "")
+  foreach(_dir "${OPENFOAM_LIBRARY_DIR}/openmpi-system" "${OPENFOAM_LIBRARY_DIR}/$ENV{FOAM_MPI}")
+    if(NOT OPENFOAM_MPI_PSTREAM_DIR AND EXISTS "${_dir}/libPstream.so"
+       AND NOT "${_dir}" STREQUAL "${OPENFOAM_LIBRARY_DIR}/")
+      set(OPENFOAM_MPI_PSTREAM_DIR "${_dir}")
+    endif()
+  endforeach()
+  mark_as_advanced(OPENFOAM_BLOCKMESH OPENFOAM_DECOMPOSEPAR OPENFOAM_RECONSTRUCTPAR)
 else()
   set(OPENFOAM_INCLUDE_DIRS "")
 endif()

@@ -78,6 +78,32 @@ void requireSupportedCase(const std::string& directory) {
     }
 }
 
+bool requireDecomposition(const std::string& directory, int ranks) {
+    const fs::path file = fs::path(directory) / "system/decomposeParDict";
+    if (!fs::exists(file)) return false;
+    const std::string where = "OpenFOAM case " + directory + ": system/decomposeParDict: ";
+    const std::string text = dictionaryText(file);
+    const std::string n = keywordValue(text, "numberOfSubdomains");
+    if (n.empty())
+        throw Error(where + "no numberOfSubdomains; the line is decomposed into one part per MPI rank: set "
+                    "'numberOfSubdomains " + std::to_string(ranks) + ";'");
+    int parts = 0;
+    try {
+        std::size_t used = 0;
+        parts = std::stoi(n, &used);
+        if (used != n.size()) parts = 0;
+    } catch (const std::exception&) {
+        parts = 0;
+    }
+    if (parts != ranks)
+        throw Error(where + "numberOfSubdomains " + n + ", but quicksand runs on " + std::to_string(ranks) +
+                    " MPI ranks and solves one part of the line on each: set 'numberOfSubdomains " +
+                    std::to_string(ranks) + ";' or run with mpirun -np " + n);
+    if (keywordValue(text, "method").empty())
+        throw Error(where + "no method; give one, e.g. 'method scotch;' (docs/openfoam.md, \"A line on MPI ranks\")");
+    return true;
+}
+
 std::vector<std::string> describeCase(const std::string& directory, double liquidViscosity, double liquidDensity) {
     const fs::path dir(directory);
     std::vector<std::string> lines;

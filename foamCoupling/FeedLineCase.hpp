@@ -13,6 +13,11 @@ namespace qs::foam {
 /// `directory` is not an incompressible single-phase case pimpleFoam could run.
 void requireSupportedCase(const std::string& directory);
 
+/// Over `ranks` MPI ranks, a case with system/decomposeParDict is decomposed into that many
+/// parts: throws qs::Error naming the file and the key when numberOfSubdomains is missing or is
+/// not `ranks`. Returns whether the case has a decomposeParDict.
+bool requireDecomposition(const std::string& directory, int ranks);
+
 /// What the case's dictionaries select, read as text: lines for `quicksand check` (turbulence,
 /// viscosity, fvOptions), with a note where the case's nu is not the column's water
 /// (liquidViscosity / liquidDensity, Pa s and kg/m3).

@@ -11,7 +11,9 @@ namespace qs::foam {
 bool available() { return true; }
 void registerFoamCoupling() {
     registerOpenFoamModel(
-        [](const CaseConfig& c, bool resume) { return std::make_unique<FoamReservoir>(c, resume); });
+        [](const CaseConfig& c, bool resume, const Communicator* ranks) {
+            return std::make_unique<FoamReservoir>(c, resume, ranks);
+        });
     registerOpenFoamCaseCheck([](const CaseConfig& c) {
         requireSupportedCase(c.reservoir.openfoamCase);
         return describeCase(c.reservoir.openfoamCase, c.liquid.viscosity, c.liquid.density);

@@ -10,6 +10,7 @@
 
 #include "FeedLineCase.hpp"
 #include "core/Error.hpp"
+#include "parallel/AgreeOnErrors.hpp"
 
 namespace qs::foam {
 
@@ -26,17 +27,56 @@ std::string shellQuote(const std::string& s) {
     return q + "'";
 }
 
+/// Runs an OpenFOAM utility on the case in `dir` with `arguments`, its output to the log;
+/// returns its exit code.
+int runUtility(const std::string& program, const fs::path& dir, const std::string& arguments, const std::string& log) {
+    const std::string cmd = program + " -case " + shellQuote(dir.string()) + " " + arguments + " >> " +
+                            shellQuote(log) + " 2>&1";
+    const int status = std::system(cmd.c_str());
+    return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+}
+
 /// Runs blockMesh in `dir` when it has no mesh yet; its output goes to the log.
 void meshIfNeeded(const fs::path& dir, const std::string& log, const std::string& caseName) {
     if (fs::exists(dir / "constant/polyMesh/owner")) return;
     QS_CHECK(fs::exists(dir / "system/blockMeshDict"),
              "OpenFOAM case " << caseName << ": no mesh (constant/polyMesh) and no system/blockMeshDict to make one");
-    const std::string cmd = std::string(QUICKSAND_BLOCKMESH) + " -case " + shellQuote(dir.string()) +
-                            " >> " + shellQuote(log) + " 2>&1";
-    const int status = std::system(cmd.c_str());
-    const int rc = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
+    const int rc = runUtility(QUICKSAND_BLOCKMESH, dir, "", log);
     QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": blockMesh could not mesh system/blockMeshDict (exit "
                                       << rc << "); see its messages in " << log);
+}
+
+/// The processorN/ folders of a decomposed case.
+int processorFolders(const fs::path& dir) {
+    int n = 0;
+    while (fs::is_directory(dir / ("processor" + std::to_string(n)))) ++n;
+    return n;
+}
+
+void removeProcessorFolders(const fs::path& dir) {
+    for (int n = processorFolders(dir); n-- > 0;) fs::remove_all(dir / ("processor" + std::to_string(n)));
+}
+
+/// The processors' fields as one case again (the times not yet reconstructed), for a resume on
+/// another number of ranks; the processor folders then go.
+void reconstruct(const fs::path& dir, const std::string& log, const std::string& caseName) {
+    const std::string program = fs::path(QUICKSAND_DECOMPOSEPAR).parent_path() / "reconstructPar";
+    const int rc = runUtility(program, dir, "-newTimes", log);
+    QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": reconstructPar could not join the line's "
+                                      << processorFolders(dir) << " processor folders in " << dir.string()
+                                      << " (exit " << rc << "); see its messages in " << log);
+    removeProcessorFolders(dir);
+}
+
+/// decomposePar on the working copy into one part per rank: its start, or (a resume) every time
+/// folder the run has written, the checkpoint's among them.
+void decompose(const fs::path& dir, const std::string& log, const std::string& caseName, int ranks, bool allTimes) {
+    const int rc = runUtility(QUICKSAND_DECOMPOSEPAR, dir, allTimes ? "-force -copyUniform -time '0:'" : "-force", log);
+    QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": decomposePar could not decompose the line with its "
+                                      << "system/decomposeParDict (exit " << rc << "); see its messages in " << log);
+    const int made = processorFolders(dir);
+    QS_CHECK(made == ranks, "OpenFOAM case " << caseName << ": decomposePar made " << made << " processor folders, "
+                                            << "not one per rank (" << ranks << "); see " << log);
 }
 
 }  // namespace
@@ -47,65 +87,131 @@ void prepareEnvironment() {
     setenv("WM_PROJECT_DIR", QUICKSAND_OPENFOAM_PROJECT_DIR, 0);
 }
 
-void loadPlugin() {
-    if (createTube) return;
+void loadPlugin(bool mpi) {
+    // one process, one plugin: both need "libPstream.so", and the process keeps the first it loads
+    static int loaded = -1;
+    if (createTube) {
+        QS_CHECK(loaded == int(mpi), "this process already runs an OpenFOAM line "
+                                         << (loaded ? "decomposed over MPI ranks" : "serially")
+                                         << " and cannot load OpenFOAM's other Pstream; run the case in its own process");
+        return;
+    }
+    const char* plugin = mpi ? QUICKSAND_FOAM_PLUGIN_MPI : QUICKSAND_FOAM_PLUGIN;
+    QS_CHECK(*plugin, "a decomposed OpenFOAM line needs OpenFOAM's MPI Pstream, which this build lacks (quicksand "
+                      "built without MPI, or no libPstream.so of OpenFOAM's MPI found); remove the case's "
+                      "system/decomposeParDict to run the line on rank 0");
     prepareEnvironment();
-    void* handle = dlopen(QUICKSAND_FOAM_PLUGIN, RTLD_NOW | RTLD_GLOBAL);
-    QS_CHECK(handle, "cannot load the OpenFOAM plugin " << QUICKSAND_FOAM_PLUGIN << ": " << dlerror());
+    void* handle = dlopen(plugin, RTLD_NOW | RTLD_GLOBAL);
+    QS_CHECK(handle, "cannot load the OpenFOAM plugin " << plugin << ": " << dlerror());
     createTube = reinterpret_cast<CreateTube>(dlsym(handle, "quicksand_foam_create_tube"));
-    QS_CHECK(createTube, "the OpenFOAM plugin " << QUICKSAND_FOAM_PLUGIN << " lacks quicksand_foam_create_tube");
+    QS_CHECK(createTube, "the OpenFOAM plugin " << plugin << " lacks quicksand_foam_create_tube");
+    loaded = int(mpi);
 }
 
-FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume)
+FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume, const Communicator* ranks)
     : caseName_(config.reservoir.openfoamCase),
       gatePatch_(config.reservoir.gatePatch),
       reservoirPatch_(config.reservoir.reservoirPatch),
       density_(config.liquid.density),
       gravity_(config.gravity),
       shape_(config.reservoir.areaTable.empty() ? ReservoirShape::prismatic(config.reservoir.area)
-                                                 : ReservoirShape::table(config.reservoir.areaTable)) {
+                                                 : ReservoirShape::table(config.reservoir.areaTable)),
+      ranks_(ranks && ranks->parallel() ? ranks : nullptr) {
     head_ = trialHead_ = config.reservoir.head;
     prepareEnvironment();
+    const int rank = ranks_ ? ranks_->rank() : 0;
     const fs::path source(config.reservoir.openfoamCase);
-    QS_CHECK(fs::is_directory(source), "case.toml: key 'reservoir.openfoam_case': OpenFOAM case directory "
-                                           << source.string() << " does not exist");
-    requireSupportedCase(caseName_);
-
     const fs::path out = fs::path(config.caseDirectory) / config.output.directory;
-    {  // the working copy goes into the output: an output inside the OpenFOAM case would copy itself
+    // Each stage below is agreed over the ranks before the next begins: the case, rank 0's
+    // working copy, the plugin, the line opened.
+    agreeOnErrors(ranks_, [&] {
+        QS_CHECK(fs::is_directory(source), "case.toml: key 'reservoir.openfoam_case': OpenFOAM case directory "
+                                               << source.string() << " does not exist");
+        requireSupportedCase(caseName_);
+        // the working copy goes into the output: an output inside the OpenFOAM case would copy itself
         const std::string o = fs::weakly_canonical(out).string() + "/", c = fs::weakly_canonical(source).string() + "/";
         QS_CHECK(o.rfind(c, 0) != 0, "case.toml: key 'reservoir.openfoam_case': the OpenFOAM case "
                                          << source.string() << " holds the run's output directory " << out.string()
                                          << "; give the OpenFOAM case its own folder beside case.toml");
-    }
+        decomposed_ = ranks_ && requireDecomposition(caseName_, ranks_->size());
+    });
+    workDir_ = fs::absolute(out / "openfoam").string();
+    // OpenFOAM's output: rank 0's (Info, the master's) in openfoam.log; another rank's own
+    // messages (its errors, Pout) in a log of its own
+    logFile_ = fs::absolute(out / (rank == 0 ? std::string("openfoam.log")
+                                             : "openfoam.processor" + std::to_string(rank) + ".log")).string();
+    agreeOnErrors(ranks_, [&] {
+        if (rank == 0) prepareWorkingCopy(source.string(), out.string(), resume);
+    });
+    agreeOnErrors(ranks_, [&] {
+        if (decomposed_ || rank == 0) loadPlugin(decomposed_);
+    });
+    if (!resume) startTube(-1);  // a resume starts it at the checkpoint's CFD time (restoreState)
+}
+
+void FoamReservoir::prepareWorkingCopy(const std::string& sourceCase, const std::string& outDir, bool resume) {
+    const fs::path source(sourceCase), out(outDir), work(workDir_);
     fs::create_directories(out);
-    const fs::path work = out / "openfoam";
-    if (!resume || !fs::exists(work / "system/controlDict")) {
+    const bool fresh = !resume || !fs::exists(work / "system/controlDict");
+    if (fresh) {
         fs::remove_all(work);
         fs::copy(source, work, fs::copy_options::recursive);
     }
-    workDir_ = fs::absolute(work).string();
     std::ofstream(work / "openfoam.foam");  // ParaView opens the case through this (empty) file
-    logFile_ = fs::absolute(out / "openfoam.log").string();
     meshIfNeeded(work, logFile_, caseName_);
-    loadPlugin();
-    if (!resume) startTube(-1);  // a resume starts it at the checkpoint's CFD time (restoreState)
+    const int ranks = ranks_ ? ranks_->size() : 1;
+    const int had = fresh ? 0 : processorFolders(work);
+    if (decomposed_) {
+        // the user's decomposition, also where it was added to the case since the copy was made
+        fs::copy_file(source / "system/decomposeParDict", work / "system/decomposeParDict",
+                      fs::copy_options::overwrite_existing);
+        if (fresh || had != ranks) {
+            // a resume on another number of ranks: the fields joined again, then cut anew
+            if (had > 0) reconstruct(work, logFile_, caseName_);
+            decompose(work, logFile_, caseName_, ranks, !fresh);
+        }
+    } else if (fresh) {
+        removeProcessorFolders(work);  // a user's own decomposition, copied with the case
+    } else if (had > 0) {
+        reconstruct(work, logFile_, caseName_);  // a decomposed run resumed on one rank
+    }
+}
+
+template <class F>
+void FoamReservoir::onLine(F&& f) {
+    if (ranks_ && !decomposed_)
+        agreeOnErrors(ranks_, [&] {
+            if (tube_) f();
+        });
+    else
+        f();
 }
 
 FoamReservoir::~FoamReservoir() = default;
 
 void FoamReservoir::startTube(double startTime) {
     tube_.reset();  // one OpenFOAM case open at a time
+    const int rank = ranks_ ? ranks_->rank() : 0;
+    const bool solves = decomposed_ || rank == 0;  // rank 0 alone solves a line that is not decomposed
+    const std::string dir = decomposed_ ? workDir_ + "/processor" + std::to_string(rank) : workDir_;
     TubeSettings s;
-    s.caseDirectory = workDir_.c_str();
+    s.caseDirectory = dir.c_str();
     s.gatePatch = gatePatch_.c_str();
     s.reservoirPatch = reservoirPatch_.c_str();
     s.logFile = logFile_.c_str();
     s.startTime = startTime;
+    s.parallel = decomposed_;
     char error[8192] = "";
-    tube_.reset(createTube(&s, error, sizeof error));
-    // OpenFOAM names the run's working copy; the user knows their own case
-    QS_CHECK(tube_, "OpenFOAM case " << caseName_ << ": " << userPaths(error));
+    std::unique_ptr<Tube> tube;
+    // every rank opens its part, and agrees (a rank that failed alone would leave the others
+    // waiting in OpenFOAM's next reduction)
+    agreeOnErrors(ranks_, [&] {
+        if (!solves) return;
+        tube.reset(createTube(&s, error, sizeof error));
+        // OpenFOAM names the run's working copy; the user knows their own case
+        QS_CHECK(tube, "OpenFOAM case " << caseName_ << ": " << userPaths(error));
+    });
+    tube_ = std::move(tube);
 }
 
 std::string FoamReservoir::userPaths(std::string text) const {
@@ -116,7 +222,15 @@ std::string FoamReservoir::userPaths(std::string text) const {
 
 std::string FoamReservoir::name() const { return "OpenFOAM case " + caseName_; }
 
-std::string FoamReservoir::description() const { return tube_ ? tube_->description() : ""; }
+std::string FoamReservoir::description() const {
+    std::string d = tube_ ? tube_->description() : "";
+    if (decomposed_)
+        d += "; decomposed over " + std::to_string(ranks_->size()) + " MPI ranks (system/decomposeParDict)";
+    else if (ranks_)
+        d += "; solved on rank 0 of " + std::to_string(ranks_->size()) +
+             " (the case has no system/decomposeParDict: give it one to solve the line on every rank)";
+    return d;
+}
 
 double FoamReservoir::initialGatePressure() const { return density_ * gravity_ * head_; }
 
@@ -129,12 +243,17 @@ double FoamReservoir::solveWindow(double /*t*/, double dt, double flux) {
     // the level at the window's middle drives the line over the window
     const double p0 = gravity_ * 0.5 * (head_ + trialHead_);
     double p = 0;
-    try {
-        p = tube_->solve(dt, flux, p0, pending_);
-    } catch (const std::exception& e) {
-        throw Error("OpenFOAM case " + caseName_ + " failed at t = " + std::to_string(tube_->time()) +
-                    " s: " + userPaths(e.what()) + " (OpenFOAM's log: " + logFile_ + ")");
-    }
+    onLine([&] {
+        try {
+            p = tube_->solve(dt, flux, p0, pending_);
+        } catch (const std::exception& e) {
+            throw Error("OpenFOAM case " + caseName_ + " failed at t = " + std::to_string(tube_->time()) +
+                        " s: " + userPaths(e.what()) + " (OpenFOAM's log: " + logFile_ + ")");
+        }
+    });
+    // rank 0's pressure on every rank (p + 0 + ... is p, bit for bit); a decomposed line's is
+    // already OpenFOAM's sum over every rank's gate faces
+    if (ranks_ && !decomposed_) p = ranks_->sum(tube_ ? p : 0.0);
     pending_ = true;
     return density_ * p;
 }
@@ -142,15 +261,20 @@ double FoamReservoir::solveWindow(double /*t*/, double dt, double flux) {
 void FoamReservoir::acceptWindow() {
     head_ = trialHead_;
     pending_ = false;
-    try {
-        tube_->accept();  // the case's function objects see the coupled solution
-    } catch (const std::exception& e) {
-        throw Error("OpenFOAM case " + caseName_ + ": a function object of system/controlDict failed at t = " +
-                    std::to_string(tube_->time()) + " s: " + userPaths(e.what()));
-    }
+    onLine([&] {
+        try {
+            tube_->accept();  // the case's function objects see the coupled solution
+        } catch (const std::exception& e) {
+            throw Error("OpenFOAM case " + caseName_ + ": a function object of system/controlDict failed at t = " +
+                        std::to_string(tube_->time()) + " s: " + userPaths(e.what()));
+        }
+    });
 }
 
-std::vector<double> FoamReservoir::saveState() const { return {head_, tube_->time()}; }
+std::vector<double> FoamReservoir::saveState() const {
+    // the CFD time from a rank that solves the line (rank 0 does; it writes the checkpoint)
+    return {head_, tube_ ? tube_->time() : -1.0};
+}
 
 void FoamReservoir::restoreState(const std::vector<double>& state) {
     QS_CHECK(state.size() == 2, "OpenFOAM reservoir: the checkpoint holds no reservoir level and CFD time");
@@ -158,17 +282,21 @@ void FoamReservoir::restoreState(const std::vector<double>& state) {
     pending_ = false;
     try {
         startTube(state[1]);
+    } catch (const SharedError& e) {
+        throw SharedError(std::string(e.what()) + " (cannot resume; OpenFOAM's log: " + logFile_ + ")");
     } catch (const Error& e) {
         throw Error(std::string(e.what()) + " (cannot resume; OpenFOAM's log: " + logFile_ + ")");
     }
 }
 
 void FoamReservoir::writeOutput(double /*t*/) {
-    try {
-        tube_->write();
-    } catch (const std::exception& e) {
-        throw Error("OpenFOAM case " + caseName_ + ": writing fields failed: " + userPaths(e.what()));
-    }
+    onLine([&] {
+        try {
+            tube_->write();  // a decomposed line: each rank its processor folder
+        } catch (const std::exception& e) {
+            throw Error("OpenFOAM case " + caseName_ + ": writing fields failed: " + userPaths(e.what()));
+        }
+    });
 }
 
 }  // namespace qs::foam

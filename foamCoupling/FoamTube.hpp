@@ -23,6 +23,9 @@ struct TubeSettings {
     const char* logFile = nullptr;         ///< OpenFOAM's own output goes here
     /// s: a resume starts from the fields written at this CFD time; < 0: the case's own start
     double startTime = -1;
+    /// caseDirectory is this rank's processorN/ of a decomposed case: OpenFOAM's Pstream joins
+    /// the MPI the program started (the plugin built on the MPI libPstream only)
+    bool parallel = false;
 };
 
 class Tube {

@@ -86,6 +86,7 @@ private:
     void construct(const qs::foam::TubeSettings& s) {
         FatalError.throwExceptions();
         FatalIOError.throwExceptions();
+        if (s.parallel) joinTheRanks();
         startAgglomerationAsAFreshProcess();
         const fileName dir(s.caseDirectory);
         runTime_.reset(new Time(Time::controlDictName, fileName(dir.path()), fileName(dir.name())));
@@ -119,6 +120,25 @@ private:
         profile_.reset(new qs::foam::GateProfile(mesh, gateID_));
         runTime_->functionObjects().start();  // as pimpleFoam's first Time::run()
         describe();
+    }
+
+    /// A decomposed line: OpenFOAM's Pstream takes the MPI that quicksand started (UPstream::init
+    /// finds MPI initialised and leaves its start and its end to quicksand), and from then on
+    /// this process is one rank of a parallel OpenFOAM run: each rank reads its processorN/,
+    /// processor patches exchange their faces, gSum and the linear solvers reduce over the
+    /// ranks, Info is the master's.
+    static void joinTheRanks() {
+#ifdef QUICKSAND_FOAM_PSTREAM_MPI
+        if (Pstream::parRun()) return;
+        static int argc = 1;
+        static char name[] = "quicksand";
+        static char* args[] = {name, nullptr};
+        static char** argv = args;
+        UPstream::init(argc, argv, false);
+#else
+        FatalErrorInFunction << "this OpenFOAM plugin is built on the serial (dummy) Pstream and cannot solve a "
+                                "decomposed line" << exit(FatalError);
+#endif
     }
 
     /// OpenFOAM's pair agglomeration (GAMG's default) flips the direction of its sweep over the

@@ -27,13 +27,13 @@ std::vector<std::string> checkOpenFoamCase(const CaseConfig& config) {
     return openFoamCaseCheck()(config);
 }
 
-std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config, bool resume) {
+std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config, bool resume, const Communicator* ranks) {
     if (!openFoamFactory())
         throw Error(
             "case.toml: key 'reservoir.model': \"openfoam\" needs a quicksand build with OpenFOAM; "
             "this build has none. Install it with tools/setup.sh --openfoam and rebuild, or use "
             "\"constant_head\" or \"lumped\".");
-    return openFoamFactory()(config, resume);
+    return openFoamFactory()(config, resume, ranks);
 }
 
 }  // namespace qs

@@ -18,6 +18,7 @@
 namespace qs {
 
 struct CaseConfig;
+class Communicator;
 
 class WindowedModel {
 public:
@@ -40,13 +41,16 @@ public:
 };
 
 /// foamCoupling/ registers the OpenFOAM model here at start-up (mpm/ never depends on it).
-/// `resume`: the run continues from a checkpoint (the model keeps its working files).
+/// `resume`: the run continues from a checkpoint (the model keeps its working files). `ranks`:
+/// the run's MPI ranks (null on one); the model is made on every rank, collectively, and each
+/// rank's solveWindow returns the same pressure.
 using WindowedModelFactory =
-    std::function<std::unique_ptr<WindowedModel>(const CaseConfig&, bool resume)>;
+    std::function<std::unique_ptr<WindowedModel>(const CaseConfig&, bool resume, const Communicator* ranks)>;
 void registerOpenFoamModel(WindowedModelFactory factory);
 /// The model of reservoir.model = "openfoam"; throws qs::Error naming the key when this build
 /// has no OpenFOAM.
-std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config, bool resume = false);
+std::unique_ptr<WindowedModel> makeOpenFoamModel(const CaseConfig& config, bool resume = false,
+                                                 const Communicator* ranks = nullptr);
 
 /// `quicksand check` of an OpenFOAM reservoir: foamCoupling/ registers a checker that refuses a
 /// case quicksand cannot run (throws qs::Error) and describes the one it can, a line each.

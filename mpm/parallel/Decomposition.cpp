@@ -215,7 +215,8 @@ Decomposition decompose(const CaseConfig& config, int ranks) {
         throw Error(config.caseDirectory + "/case.toml: a 1D column (grid.dimension = 1) cannot be cut over " +
                     std::to_string(ranks) + " ranks: its blocks would cut its only column across the height. Run it "
                     "on one rank (a 1D run takes seconds to minutes); 2D, axisymmetric and 3D grids are cut into "
-                    "blocks of whole columns");
+                    "blocks of whole columns. Beside an OpenFOAM line (reservoir.model = \"openfoam\") a 1D column "
+                    "does run on ranks: the line is decomposed and each rank steps the column whole");
     Decomposition best;
     double bestPrice = std::numeric_limits<double>::infinity();
     for (int px = 1; px <= ranks; ++px) {

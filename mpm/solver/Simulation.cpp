@@ -16,6 +16,7 @@
 #include "io/OutputRotation.hpp"
 #include "io/PipesTable.hpp"
 #include "io/SeriesWriter.hpp"
+#include "parallel/AgreeOnErrors.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/GatherPoints.hpp"
 #include "reservoir/ReservoirModel.hpp"
@@ -105,26 +106,6 @@ void writeFields(FieldWriter* writer, const DoublePointSolver<D>& solver, const 
     writer->endStep();
 }
 
-/// Runs `f` on every rank and agrees on its errors: if any rank's fails, every rank throws the
-/// lowest failing rank's message as a SharedError (said once, by rank 0). Collective; for the
-/// run's opening, where a case fails alike on every rank or on rank 0 alone (its files), and a
-/// rank that went on would wait in the next reduction for one that had stopped.
-template <class F>
-void agreeOnErrors(const Communicator* ranks, F&& f) {
-    if (!ranks) return f();
-    std::string failure;
-    try {
-        f();
-    } catch (const Error& e) {
-        failure = e.what();
-    } catch (const std::exception& e) {
-        failure = std::string("internal error: ") + e.what();
-    }
-    const std::vector<double> failed = ranks->allGather(failure.empty() ? 0.0 : 1.0);
-    for (int r = 0; r < static_cast<int>(failed.size()); ++r)
-        if (failed[r] != 0) throw SharedError(ranks->broadcast(failure, r));
-}
-
 }  // namespace
 
 /// What Simulation does, for any dimension; RunOf<D> does it for one.
@@ -155,6 +136,9 @@ public:
           checkpointPath_(outDir_ / "checkpoint.h5"),
           windowed_(options.windowedModel || config.reservoir.kind == ReservoirKind::OpenFoam),
           ranks_(options.ranks && options.ranks->parallel() ? options.ranks : nullptr),
+          // a 1D column beside a line on ranks is stepped whole on every rank (it cannot be cut,
+          // and it costs little beside the line, which is decomposed)
+          columnRanks_(ranks_ && !(D == 1 && windowed_) ? ranks_ : nullptr),
           root_(!ranks_ || ranks_->rank() == 0) {
         open();
     }
@@ -185,6 +169,8 @@ private:
     const bool windowed_;
     /// over MPI ranks, all of them (null on one); rank 0 is the root, which writes the files
     const Communicator* ranks_ = nullptr;
+    /// the ranks the column is cut over: ranks_, or null where every rank steps it whole
+    const Communicator* columnRanks_ = nullptr;
     bool root_ = true;
 
     // in the order they are made (and unmade in reverse): the solver holds the reservoir, the
@@ -215,21 +201,19 @@ void RunOf<D>::open() {
         // Validate everything that can be validated before touching an earlier output directory:
         // what `quicksand check` validates too (solver/RunPreconditions.hpp).
         validateRun(config);
-        QS_CHECK(!ranks_ || !windowed_,
-                 config.caseDirectory << "/case.toml: reservoir.model = \"openfoam\" does not run on MPI ranks yet (the "
-                                         "line over OpenFOAM's Pstream is the next part of issue 41); run the coupled "
-                                         "case on one rank, without mpirun");
         if (!windowed_) builtIn_ = makeReservoirModel(config);
         if (options_.resume)
             QS_CHECK(fs::exists(checkpointPath_),
                      "cannot resume: no checkpoint at " << checkpointPath_.string() << " (run without --resume first)");
         // rank 0 alone writes the files: it rotates the earlier output
         if (root_ && options_.writeFiles && !options_.resume) rotation_.emplace(outDir_, config.caseDirectory + "/case.toml");
-
-        // A windowed model (OpenFOAM) works in the output directory.
+    });
+    // A windowed model (OpenFOAM) works in the output directory. Its own opening is collective
+    // (a decomposed line), in stages agreed over the ranks: a stage of its own here.
+    agreeOnErrors(ranks_, [&] {
         model_ = options_.windowedModel;
         if (windowed_ && !model_) {
-            ownedModel_ = makeOpenFoamModel(config, options_.resume);
+            ownedModel_ = makeOpenFoamModel(config, options_.resume, ranks_);
             model_ = ownedModel_.get();
         }
         if (windowed_) gate_ = std::make_unique<CouplingInterface>(*model_);
@@ -238,17 +222,17 @@ void RunOf<D>::open() {
     // over MPI ranks the constructor cuts the grid (decompose: a 1D column, or more ranks than
     // the grid can be cut into, is refused alike on every rank) and exchanges the ghost points
     agreeOnErrors(ranks_, [&] {
-        if (!ranks_) return;
+        if (!columnRanks_) return;
         decompose(config, ranks_->size());
         QS_CHECK(config.time.scheme == TimeScheme::Explicit,
                  config.caseDirectory << "/case.toml: time.scheme = \"semi_implicit\" does not run on MPI ranks yet "
                                          "(its pressure solve over the ranks is the next part of issue 41); run it on "
                                          "one rank, or with time.scheme = \"explicit\"");
     });
-    solver_ = std::make_unique<DoublePointSolver<D>>(config, *reservoir_, ranks_);
+    solver_ = std::make_unique<DoublePointSolver<D>>(config, *reservoir_, columnRanks_);
     if (rotation_) rotation_->commit();  // everything loaded: the earlier output becomes .previous
 
-    if (windowed_ && options_.writeFiles)
+    if (windowed_ && options_.writeFiles && root_)
         couplingLog_.open(outDir_ / "coupling.log", options_.resume ? std::ios::app : std::ios::trunc);
     if (windowed_) {
         auto w = std::make_unique<WindowAdvancer<D>>(*solver_, *model_, *gate_, config.coupling,
@@ -336,7 +320,9 @@ void RunOf<D>::printHeader() {
                 D, semi ? "semi-implicit" : "explicit", s.dt(), semi ? "c_skeleton" : "c_fast", s.waveSpeed(),
                 now.solidPoints, now.liquidPoints, s.time(), plannedEnd_,
                 windowed_ ? (", coupled to " + model_->name()).c_str() : "");
-    if (ranks_) {
+    if (ranks_ && !columnRanks_)
+        std::printf("quicksand: %d MPI ranks: the 1D column is stepped whole on each, beside the line\n", ranks_->size());
+    if (columnRanks_) {
         const Decomposition& d = s.rankShare()->decomposition();
         std::printf("quicksand: %d MPI ranks, blocks of whole columns %d x %d, %d cells of ghost points beside each "
                     "cut, point imbalance %.3f (quicksand check --ranks %d shows the blocks)\n",
@@ -361,14 +347,14 @@ void RunOf<D>::writeOutput() {
     std::optional<SandCells> cells;
     if constexpr (D > 1)
         if (options_.writeFiles || options_.onPipes) cells = solver_->sandCells();
-    if (fields) writeFields(fields_.get(), *solver_, cells ? &*cells : nullptr, ranks_);
+    if (fields) writeFields(fields_.get(), *solver_, cells ? &*cells : nullptr, columnRanks_);
     if (cells && (pipes_ || options_.onPipes)) {
         const PipeSurvey survey = findPipes(*cells);
         if (pipes_)
             for (const auto& row : pipesRows(s.time, D, survey)) pipes_->write(row);
         if (options_.onPipes) options_.onPipes(s.time, *cells, survey);
     }
-    if (root_) reservoir_->writeOutput(s.time);
+    reservoir_->writeOutput(s.time);  // every rank: a decomposed line writes each rank's part
     if (options_.onOutput) options_.onOutput(s, solver_->profile());
 }
 
@@ -472,7 +458,7 @@ RunSummary RunOf<D>::finish() {
     r.profile = solver.profile();
     r.steps = solver.stepCount() - steps0_;
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - wall0_).count();
-    const double pointSteps = ranks_ ? ranks_->sum(pointSteps_) : pointSteps_;
+    const double pointSteps = columnRanks_ ? columnRanks_->sum(pointSteps_) : pointSteps_;
     r.pointUpdatesPerSecond = r.wallSeconds > 0 ? pointSteps / r.wallSeconds : 0;
     r.dt = solver.dt();
     r.integrator = solver.integratorStats();

@@ -1,0 +1,39 @@
+#pragma once
+// agreeOnErrors: a stage of work that every rank runs and whose errors all ranks agree on.
+//
+//   agreeOnErrors(ranks, [&] { ... });   // throws SharedError on every rank if any rank threw
+//
+// For the openings (a case, a checkpoint, an OpenFOAM line's decomposition) that fail alike on
+// every rank or on rank 0 alone (its files): a rank that went on would wait in the next
+// collective for one that had stopped. Collective; each rank must enter the same stages in the
+// same order, so a stage is entered only once the stage before it has been agreed. Stages may
+// nest (an inner stage's SharedError is the outer's error, alike on every rank).
+#include <exception>
+#include <string>
+#include <vector>
+
+#include "core/Error.hpp"
+#include "parallel/Communicator.hpp"
+
+namespace qs {
+
+/// Runs `f` on every rank of `ranks` (or alone where ranks is null) and agrees on its errors: if
+/// any rank's fails, every rank throws the lowest failing rank's message as a SharedError, said
+/// once (by rank 0).
+template <class F>
+void agreeOnErrors(const Communicator* ranks, F&& f) {
+    if (!ranks || !ranks->parallel()) return f();
+    std::string failure;
+    try {
+        f();
+    } catch (const Error& e) {
+        failure = e.what();
+    } catch (const std::exception& e) {
+        failure = std::string("internal error: ") + e.what();
+    }
+    const std::vector<double> failed = ranks->allGather(failure.empty() ? 0.0 : 1.0);
+    for (int r = 0; r < static_cast<int>(failed.size()); ++r)
+        if (failed[r] != 0) throw SharedError(ranks->broadcast(failure, r));
+}
+
+}  // namespace qs
