@@ -36,6 +36,27 @@ int runUtility(const std::string& program, const fs::path& dir, const std::strin
     return WIFEXITED(status) ? WEXITSTATUS(status) : -1;
 }
 
+/// The last FOAM FATAL ERROR in the log, on one line ("" where there is none): a failed opening
+/// puts the earlier output back, the log with it, so the message must carry OpenFOAM's reason.
+std::string lastFoamError(const std::string& log) {
+    std::ifstream in(log);
+    std::stringstream ss;
+    ss << in.rdbuf();
+    const std::string text = ss.str();
+    const auto at = text.rfind("FOAM FATAL");
+    if (at == std::string::npos) return "";
+    std::string said;
+    std::istringstream lines(text.substr(at));
+    std::getline(lines, said);  // the heading itself
+    for (std::string line; std::getline(lines, line) && said.size() < 400;) {
+        const auto first = line.find_first_not_of(" \t");
+        if (first == std::string::npos || line.find("From function") != std::string::npos) continue;
+        if (line.find("in file ") != std::string::npos || line.find("FOAM exiting") != std::string::npos) break;
+        said += (said.empty() ? "" : " ") + line.substr(first);
+    }
+    return ": OpenFOAM said '" + said + "'";
+}
+
 /// Runs blockMesh in `dir` when it has no mesh yet; its output goes to the log.
 void meshIfNeeded(const fs::path& dir, const std::string& log, const std::string& caseName) {
     if (fs::exists(dir / "constant/polyMesh/owner")) return;
@@ -43,7 +64,7 @@ void meshIfNeeded(const fs::path& dir, const std::string& log, const std::string
              "OpenFOAM case " << caseName << ": no mesh (constant/polyMesh) and no system/blockMeshDict to make one");
     const int rc = runUtility(QUICKSAND_BLOCKMESH, dir, "", log);
     QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": blockMesh could not mesh system/blockMeshDict (exit "
-                                      << rc << "); see its messages in " << log);
+                                      << rc << ")" << lastFoamError(log) << "; see its messages in " << log);
 }
 
 /// The processorN/ folders of a decomposed case.
@@ -64,7 +85,8 @@ void reconstruct(const fs::path& dir, const std::string& log, const std::string&
     const int rc = runUtility(program, dir, "-newTimes", log);
     QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": reconstructPar could not join the line's "
                                       << processorFolders(dir) << " processor folders in " << dir.string()
-                                      << " (exit " << rc << "); see its messages in " << log);
+                                      << " (exit " << rc << ")" << lastFoamError(log) << "; see its messages in "
+                                      << log);
     removeProcessorFolders(dir);
 }
 
@@ -73,7 +95,8 @@ void reconstruct(const fs::path& dir, const std::string& log, const std::string&
 void decompose(const fs::path& dir, const std::string& log, const std::string& caseName, int ranks, bool allTimes) {
     const int rc = runUtility(QUICKSAND_DECOMPOSEPAR, dir, allTimes ? "-force -copyUniform -time '0:'" : "-force", log);
     QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": decomposePar could not decompose the line with its "
-                                      << "system/decomposeParDict (exit " << rc << "); see its messages in " << log);
+                                      << "system/decomposeParDict (exit " << rc << ")" << lastFoamError(log)
+                                      << "; see its messages in " << log);
     const int made = processorFolders(dir);
     QS_CHECK(made == ranks, "OpenFOAM case " << caseName << ": decomposePar made " << made << " processor folders, "
                                             << "not one per rank (" << ranks << "); see " << log);
