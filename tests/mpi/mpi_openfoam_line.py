@@ -118,9 +118,14 @@ if "solved on rank 0 of 2" not in p.stdout:
 if open(os.path.join(serial, "output/series.csv")).read() != open(os.path.join(alone, "output/series.csv")).read():
     fail("a line solved on rank 0 of 2: series.csv is not the one-rank run's byte for byte")
 
-# 2. decomposed over 2 and 3 ranks
+# 2. decomposed over 2 and 3 ranks (check says how, once)
 for ranks, split in ((2, "2 1 1"), (3, "3 1 1")):
     case = make_case(f"decomposed{ranks}", ranks, split)
+    c = subprocess.run([*mpiexec, "-np", str(ranks), quicksand, "check", case], capture_output=True, text=True,
+                       timeout=120)
+    if c.returncode != 0 or c.stdout.count("the 1D column is stepped whole on each") != 1:
+        fail(f"check on {ranks} ranks (exit {c.returncode}) did not say once how the run is spread:\n"
+             + c.stdout[-2000:] + c.stderr[-2000:])
     p = run(case, ranks=ranks)
     if f"decomposed over {ranks} MPI ranks" not in p.stdout:
         fail(f"the line on {ranks} ranks did not say it is decomposed:\n" + p.stdout)

@@ -1,0 +1,126 @@
+#!/usr/bin/env python3
+"""Runs on MPI ranks that lose a rank or meet an error on one rank only (ctest labels mpi and
+hostile; issue 41): each ends every rank within the timeout, says why, and leaves the last
+checkpoint whole, so the run resumes from it.
+
+ 1. a rank killed (SIGKILL) mid-run: mpirun ends the other rank and exits non-zero; the last
+    checkpoint resumes on one rank;
+ 2. an error on rank 0 alone inside the run: the step files' folder (output/fields/) removed
+    under a running 2-rank run, so that rank 0, which alone writes the fields, cannot write the
+    next output. Rank 0 says so, naming itself, and MPI_Abort ends the other rank, which would
+    otherwise wait for rank 0 in the next step's reduction; the checkpoint resumes.
+
+The column is the piping tests' random bed, 24 columns wide (cut into 2 blocks of 12).
+
+usage: mpi_hostile.py QUICKSAND "MPIEXEC ..." SOURCE_DIR WORK_DIR
+"""
+import os
+import shlex
+import shutil
+import signal
+import subprocess
+import sys
+import time
+
+quicksand, mpiexec, source, work = sys.argv[1], shlex.split(sys.argv[2]), sys.argv[3], sys.argv[4]
+TIMEOUT = 120  # s for a run to end once its trouble began
+failures = []
+
+
+def fail(message):
+    failures.append(message)
+    print("FAIL: " + message, flush=True)
+
+
+def make_case(name):
+    case = os.path.join(work, name)
+    os.makedirs(case)
+    shutil.copy(os.path.join(source, "cases/verification/random_bed/case.toml"), case)
+    return case
+
+
+def start(case, *extra):
+    cmd = [*mpiexec, "-np", "2", quicksand, "run", case, "--set", "grid.width=0.1488", "--set", "time.end=30",
+           "--set", "time.output_interval=0.01", "--set", "time.checkpoint_interval=0.01", "--quiet", *extra]
+    return subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True, start_new_session=True)
+
+
+def wait_for(path, process, seconds=180):
+    """Until `path` exists (and a little longer, so that a checkpoint follows it)."""
+    end = time.time() + seconds
+    while time.time() < end and process.poll() is None:
+        if os.path.exists(path):
+            return True
+        time.sleep(0.2)
+    return False
+
+
+def ranks_of(process):
+    """The quicksand processes mpirun started (its children)."""
+    out = subprocess.run(["pgrep", "-P", str(process.pid)], capture_output=True, text=True).stdout
+    return [int(p) for p in out.split()]
+
+
+def finish(process, what):
+    try:
+        out, err = process.communicate(timeout=TIMEOUT)
+    except subprocess.TimeoutExpired:
+        os.killpg(process.pid, signal.SIGKILL)
+        out, err = process.communicate()
+        fail(f"{what}: the run did not end within {TIMEOUT} s (a rank waiting for another)")
+    return process.returncode, out, err
+
+
+def resumes(case, what):
+    p = subprocess.run([quicksand, "run", case, "--set", "grid.width=0.1488", "--resume", "--set", "time.end=0.05",
+                        "--quiet"], capture_output=True, text=True, timeout=600)
+    if p.returncode != 0:
+        fail(f"{what}: the last checkpoint does not resume on one rank (exit {p.returncode}):\n{p.stderr[-2000:]}")
+    else:
+        print(f"{what}: the checkpoint resumed on one rank", flush=True)
+
+
+shutil.rmtree(work, ignore_errors=True)
+os.makedirs(work)
+
+# 1. a rank killed
+case = make_case("killed")
+run = start(case, "--set", "output.fields=false")
+if not wait_for(os.path.join(case, "output/checkpoint.h5"), run):
+    fail("killed: no checkpoint written before the run ended: " + (run.communicate()[1] or "")[-2000:])
+else:
+    time.sleep(1.0)  # the run goes on past its first checkpoint
+    ranks = ranks_of(run)
+    if len(ranks) != 2:
+        fail(f"killed: mpirun's children are {ranks}, expected two ranks")
+    else:
+        os.kill(ranks[1], signal.SIGKILL)
+        rc, out, err = finish(run, "killed")
+        print(f"killed: a rank killed, mpirun exited {rc}", flush=True)
+        if rc == 0:
+            fail("killed: mpirun exited 0 after a rank was killed")
+        resumes(case, "killed")
+
+# 2. an error on rank 0 alone
+case = make_case("rank0_error")
+run = start(case)
+steps = os.path.join(case, "output/fields")
+if not wait_for(os.path.join(case, "output/checkpoint.h5"), run):
+    fail("rank0_error: no checkpoint written before the run ended: " + (run.communicate()[1] or "")[-2000:])
+elif not os.path.isdir(steps):
+    fail(f"rank0_error: no {steps} to remove (the field writer's layout changed?)")
+else:
+    time.sleep(0.5)
+    shutil.rmtree(steps)
+    rc, out, err = finish(run, "rank0_error")
+    print(f"rank0_error: output/fields/ removed under the run, mpirun exited {rc}", flush=True)
+    said = err.count("quicksand: error: rank 0:")
+    if rc == 0:
+        fail("rank0_error: the run went on without its step files' folder and exited 0")
+    elif said != 1:
+        fail(f"rank0_error: rank 0's error was said {said} times, expected once:\n{err[-3000:]}")
+    resumes(case, "rank0_error")
+
+if failures:
+    sys.exit(f"{len(failures)} failures")
+print("ranks that fail: all checks passed")
