@@ -28,6 +28,7 @@
 #include <algorithm>
 #include <cstdint>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 #include "core/Error.hpp"
@@ -193,6 +194,27 @@ public:
         }
     }
 
+    /// Per-cell arrays (one value a cell, indexed by the grid's cells: Eigen vectors, std::vector)
+    /// in the window's cells, from their owners: the semi-implicit step's pressure increment and
+    /// its held cells, which a rank solves for its own cells only. Collective.
+    template <class... Arrays>
+    void shareCellValues(Arrays&... arrays) const {
+        const std::size_t n = neighbours_.size();
+        valuesOut_.resize(n);
+        valuesIn_.resize(n);
+        for (std::size_t k = 0; k < n; ++k) {
+            valuesOut_[k].clear();
+            for (Index c : cellsOut_[k]) (valuesOut_[k].push_back(static_cast<Real>(arrays[c])), ...);
+            valuesIn_[k].resize(cellsIn_[k].size() * sizeof...(Arrays));
+        }
+        comm_.exchange(neighbours_, valuesOut_, valuesIn_);
+        for (std::size_t k = 0; k < n; ++k) {
+            std::size_t at = 0;
+            for (Index c : cellsIn_[k])
+                ((arrays[c] = static_cast<std::decay_t<decltype(arrays[c])>>(valuesIn_[k][at++])), ...);
+        }
+    }
+
     /// The step's end: drops the ghosts, the points whose cell at the step's start (set.shape.cell,
     /// the step's sort) another rank owns, and rebuilds cellStart, the step's cell lists, for the
     /// points kept (they stay sorted by those cells). `extra` (per-point scratch beside the
@@ -298,6 +320,7 @@ private:
     std::vector<int> cellOwner_;
     std::vector<char> nodeOwned_, inMyWindow_, columnOwned_;
     std::vector<Index> sendStart_;  ///< per cell, its neighbours in sendList_ (CSR)
+    mutable std::vector<std::vector<Real>> valuesOut_, valuesIn_;  ///< shareCellValues' buffers
     std::vector<int> sendList_, to_;
     std::vector<std::vector<Index>> cellsOut_, cellsIn_, nodesOut_, nodesIn_;
     std::vector<std::vector<double>> carriedOut_, carriedIn_;

@@ -8,6 +8,8 @@
 
 #include "core/Error.hpp"
 #include "core/ForAll.hpp"
+#include "parallel/CellNumbering.hpp"
+#include "parallel/RankShare.hpp"
 #include "physics/Cavitation.hpp"
 
 namespace qs {
@@ -30,8 +32,54 @@ SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context)
     held_.assign(nc, 0);
     gateWeight_.assign(ctx_.masks.gateNodes.size(), 0.0);
     for (auto* v : {&rhs_, &dp_, &gateY_, &heldValue_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
-    system_.build(ctx_.grid, ctx_.config.time.pressureSolver);
+    // over ranks the system's arrays hold the assembly only (no factorisation is analysed)
+    system_.build(ctx_.grid, ctx_.ranks ? PressureSolver::ConjugateGradient : ctx_.config.time.pressureSolver);
     stats_.solver = system_.solverName();
+    if (ctx_.ranks) setUpDistributed();
+}
+
+template <int D>
+void SemiImplicitIntegrator<D>::setUpDistributed() {
+    const RankShare<D>& share = *ctx_.ranks;
+    const Grid<D>& grid = ctx_.grid;
+    const CellNumbering<D> numbering(share.decomposition());
+    const int r = share.rank();
+    for (Index c = 0; c < grid.numCells(); ++c)
+        if (share.ownsCell(c)) owned_.push_back(c);
+    QS_CHECK(static_cast<Index>(owned_.size()) == numbering.firstRow(r + 1) - numbering.firstRow(r),
+             "the semi-implicit step over ranks: rank " << r << " owns " << owned_.size() << " cells, its rows "
+                                                        << numbering.firstRow(r + 1) - numbering.firstRow(r));
+    rowStart_.assign(1, 0);
+    for (Index c : owned_) {
+        const int* rows = system_.rows(c);
+        for (Index k = 0; k < system_.size(c); ++k) rowColumns_.push_back(numbering.row(grid.cellCoords(rows[k])));
+        rowStart_.push_back(static_cast<Index>(rowColumns_.size()));
+    }
+    rowValues_.resize(rowColumns_.size());
+    bLocal_.resize(owned_.size());
+    xLocal_.resize(owned_.size());
+    distributed_ = std::make_unique<DistributedPressureSolver>(share.comm(), numbering.firstRow(r),
+                                                               numbering.firstRow(r + 1), D);
+    stats_.solver = "CG with BoomerAMG over the ranks (hypre)";
+}
+
+template <int D>
+int SemiImplicitIntegrator<D>::solveDistributed(const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+    if (!matrixSent_) {  // the values of this pass's assembly, once for its solves
+        for (std::size_t i = 0; i < owned_.size(); ++i) {
+            const Real* v = system_.values(owned_[i]);
+            std::copy(v, v + (rowStart_[i + 1] - rowStart_[i]), rowValues_.begin() + rowStart_[i]);
+        }
+        distributed_->setMatrix(rowStart_, rowColumns_, rowValues_);
+        matrixSent_ = true;
+    }
+    for (std::size_t i = 0; i < owned_.size(); ++i) {
+        bLocal_[i] = b[owned_[i]];
+        xLocal_[i] = x[owned_[i]];
+    }
+    const int iterations = distributed_->solve(bLocal_, xLocal_, PressureSystem::kTolerance);
+    for (std::size_t i = 0; i < owned_.size(); ++i) x[owned_[i]] = xLocal_[i];
+    return iterations;
 }
 
 // CG's starting guesses, dp and y, one after the other
@@ -39,6 +87,12 @@ template <int D>
 std::vector<double> SemiImplicitIntegrator<D>::saveState() const {
     std::vector<double> state(dp_.data(), dp_.data() + dp_.size());
     state.insert(state.end(), gateY_.data(), gateY_.data() + gateY_.size());
+    if (ctx_.ranks) {  // each cell's from its owner (collective)
+        const Index nc = ctx_.grid.numCells();
+        for (Index c = 0; c < nc; ++c)
+            if (!owns(c)) state[c] = state[nc + c] = 0;
+        ctx_.ranks->comm().sumInPlace(state);
+    }
     return state;
 }
 
@@ -86,6 +140,7 @@ Real SemiImplicitIntegrator<D>::solveVelocities(const StepInputs& in, Real time)
         held_[c] = dry || atBound;
         heldValue_[c] = atBound ? limit(c) - water.pressure[c] : 0.0;
     });
+    if (ctx_.ranks) ctx_.ranks->shareCellValues(held_, heldValue_);  // the window's from their owners
     solves_ = 0;
     bool changed = true;
     while (changed) {
@@ -123,10 +178,12 @@ void SemiImplicitIntegrator<D>::gateResponse(const StepInputs& in) {
     const Index gateRow = grid.nodeStride(D - 1);  // nodes below it are the gate's
     Real mass = 0, wet = 0;
     for (Index i : ctx_.masks.gateNodes)
-        if (nodes.massL[i] > 0) {
+        if (nodes.massL[i] > 0 && (!ctx_.ranks || ctx_.ranks->ownsNode(i))) {
             mass += nodes.massL[i];
             wet += nodeFootprint(grid, i);
         }
+    mass = overRanks(mass);
+    wet = overRanks(wet);
     if (!(mass > 0)) return;
     gateDenominator_ = mass + in.dt * in.gate.resistance * wet * wet;
     gateGamma_ = in.dt * in.dt / gateDenominator_;
@@ -164,9 +221,12 @@ void SemiImplicitIntegrator<D>::assemble(Real dt) {
     const Real KL = ctx_.config.liquid.bulkModulus, dt2 = dt * dt;
     // the rank-one gate term's share from held cells, a_R . dp over them
     Real heldGate = 0;
-    if (gateGamma_ > 0)
+    if (gateGamma_ > 0) {
         for (Index c = 0; c < grid.cellStride(D - 1); ++c)
-            if (held_[c]) heldGate += gateRight_[c] * heldValue_[c];
+            if (held_[c] && owns(c)) heldGate += gateRight_[c] * heldValue_[c];
+        heldGate = overRanks(heldGate);
+    }
+    matrixSent_ = false;
     forAll(grid.numCells(), [&](Index c) {
         Real entry[kStencil] = {};  // by the neighbour's offset code
         const int centre[D] = {};
@@ -234,12 +294,25 @@ void SemiImplicitIntegrator<D>::solve(Real dt, Real time) {
           << ", dt = " << dt << " s); a smaller time.courant, or time.scheme = \"explicit\", may get past it";
         throw Error(s.str());
     };
-    if (!system_.factorize()) fail("could not factorise the matrix (not positive definite)");
+    // one rank: the system's own solver; over ranks: hypre's, which throws its own failure
+    auto solveSystem = [&](const Eigen::VectorXd& b, Eigen::VectorXd& x) {
+        if (distributed_) {
+            try {
+                stats_.iterations += solveDistributed(b, x);
+            } catch (const Error& e) {
+                fail(std::string("over the ranks failed: ") + e.what());
+            }
+            return true;
+        }
+        const bool ok = system_.solve(b, x);
+        stats_.iterations += system_.iterations();
+        return ok;
+    };
+    if (!distributed_ && !system_.factorize()) fail("could not factorise the matrix (not positive definite)");
     // CG starts from the last solution; a held cell's row is the identity with a zero right-hand side
     for (Index c = 0; c < ctx_.grid.numCells(); ++c)
         if (held_[c]) dp_[c] = 0;
-    if (!system_.solve(rhs_, dp_)) fail("did not converge");
-    stats_.iterations += system_.iterations();
+    if (!solveSystem(rhs_, dp_)) fail("did not converge");
     if (gateGamma_ > 0) {
         // Sherman-Morrison: (A + gamma a_L a_R^T)^-1 b = x - gamma (a_R . x) / (1 + gamma a_R . y) y, A y = a_L
         Eigen::VectorXd& left = gateSolve_;
@@ -249,17 +322,21 @@ void SemiImplicitIntegrator<D>::solve(Real dt, Real time) {
         Eigen::VectorXd& y = gateY_;
         for (Index c = 0; c < ctx_.grid.numCells(); ++c)
             if (held_[c]) y[c] = 0;
-        if (!system_.solve(left, y)) fail("did not converge (the gate's term)");
-        stats_.iterations += system_.iterations();
+        if (!solveSystem(left, y)) fail("did not converge (the gate's term)");
         Real ax = 0, ay = 0;
         for (Index c = 0; c < ctx_.grid.cellStride(D - 1); ++c)
-            if (!held_[c]) { ax += gateRight_[c] * dp_[c]; ay += gateRight_[c] * y[c]; }
+            if (!held_[c] && owns(c)) { ax += gateRight_[c] * dp_[c]; ay += gateRight_[c] * y[c]; }
+        ax = overRanks(ax);
+        ay = overRanks(ay);
         dp_ -= (gateGamma_ * ax / (1 + gateGamma_ * ay)) * y;
     }
     for (Index c = 0; c < ctx_.grid.numCells(); ++c)
         if (held_[c]) dp_[c] = heldValue_[c];
+    // the corrector's nodes read the increment of the window's cells: their owners' (a rank's
+    // own y and dp elsewhere in its window are not solved)
+    if (ctx_.ranks) ctx_.ranks->shareCellValues(dp_);
     for (Index c = 0; c < ctx_.grid.numCells(); ++c)
-        if (!std::isfinite(dp_[c])) {
+        if (owns(c) && !std::isfinite(dp_[c])) {
             std::ostringstream what;
             what << "gave a non-finite pressure in cell " << c << " (centre at elevation "
                  << ctx_.grid.cellCentre(ctx_.grid.cellCoords(c)[D - 1]) << " m)";
@@ -298,7 +375,9 @@ void SemiImplicitIntegrator<D>::correct(Real dt) {
     const auto& gate = ctx_.masks.gateNodes;
     Real impulse = 0;
     for (std::size_t j = 0; j < gate.size(); ++j)
-        if (nodes.massL[gate[j]] > 0) impulse += gateWeight_[j] * force_[gate[j] * D + D - 1];
+        if (nodes.massL[gate[j]] > 0 && (!ctx_.ranks || ctx_.ranks->ownsNode(gate[j])))
+            impulse += gateWeight_[j] * force_[gate[j] * D + D - 1];
+    impulse = overRanks(impulse);
     const Real dv = dt * impulse / gateDenominator_;
     for (Index i : gate)
         if (nodes.massL[i] > 0) {
@@ -336,7 +415,7 @@ bool SemiImplicitIntegrator<D>::updateHeldCells(Real dt) {
             if (p + dp_[c] < bound - boundTolerance(p)) {
                 held_[c] = 1;
                 heldValue_[c] = bound - p;
-                changed = true;
+                changed = changed || owns(c);
             }
             continue;
         }
@@ -344,10 +423,13 @@ bool SemiImplicitIntegrator<D>::updateHeldCells(Real dt) {
             pressWater({p, water.cavity[c]}, -KL / water.porosity[c] * dt * cellDivergence(c), KL, bound);
         if (pressed.pressure > bound + boundTolerance(p)) {
             held_[c] = 0;
-            changed = true;
+            changed = changed || owns(c);
         }
     }
-    return changed;
+    if (!ctx_.ranks) return changed;
+    // over ranks: the window's cells as their owners decided, and another pass if any rank's set moved
+    ctx_.ranks->shareCellValues(held_, heldValue_);
+    return ctx_.ranks->comm().any(changed);
 }
 
 template class SemiImplicitIntegrator<1>;

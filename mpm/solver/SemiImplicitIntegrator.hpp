@@ -25,10 +25,19 @@
 //
 // What bounds the step: the skeleton's stress, explicit, sqrt(E_oed / ((1 - n) rho_s)); the
 // water's compression and the drag are implicit.
+//
+// Over MPI ranks (a cut column) each rank assembles its own cells' rows as above, from its
+// block and the ghost points' window; hypre's CG with BoomerAMG solves the system over the ranks
+// (parallel/DistributedPressureSolver.hpp, the cells numbered rank by rank), and the increment,
+// the held cells and their known increments come to the window's cells from their owners before
+// the corrector reads them. The gate's sums, the active set's "changed" and the checkpointed
+// guesses are reduced over the ranks, each cell and gate node counted by its owner.
+#include <memory>
 #include <vector>
 
 #include <Eigen/Core>
 
+#include "parallel/DistributedPressureSolver.hpp"
 #include "solver/NodeVelocities.hpp"
 #include "solver/PressureSystem.hpp"
 
@@ -57,6 +66,15 @@ private:
     bool updateHeldCells(Real dt);
     Real cellDivergence(Index c) const;
     Real limit(Index c) const;
+    /// Whether this rank counts cell c (its owner; every cell on one rank).
+    bool owns(Index c) const { return !ctx_.ranks || ctx_.ranks->ownsCell(c); }
+    /// A sum of this rank's terms over the ranks (the term itself on one rank).
+    Real overRanks(Real local) const { return ctx_.ranks ? ctx_.ranks->comm().sum(local) : local; }
+    /// Over ranks: the pattern of this rank's rows in the global numbering, and the solver.
+    void setUpDistributed();
+    /// A = system_ (this rank's rows) solved over the ranks for b into x (the guess as it comes
+    /// in); the window's cells of x from their owners. Returns CG's iterations.
+    int solveDistributed(const Eigen::VectorXd& b, Eigen::VectorXd& x);
 
     StepContext<D> ctx_;
     PressureSystem system_;
@@ -78,6 +96,12 @@ private:
     Real gateDenominator_ = 0;
     int solves_ = 0;                   ///< this step's
     IntegratorStats stats_;
+    // over ranks
+    std::unique_ptr<DistributedPressureSolver> distributed_;
+    std::vector<Index> owned_;                    ///< this rank's cells, ascending (its rows in order)
+    std::vector<Index> rowStart_, rowColumns_;    ///< its rows' pattern, global columns (CSR)
+    std::vector<double> rowValues_, bLocal_, xLocal_;
+    bool matrixSent_ = false;                     ///< the assembled values are the solver's
 };
 
 }  // namespace qs

@@ -32,11 +32,12 @@ constexpr int kSteps = 200;
 /// with a window one layer short of what it needs was 2.4e-11 off (parallel/RankShare.hpp).
 constexpr double kRoundOff = 1e-12;
 
-CaseConfig randomBed(const std::vector<std::string>& sets) {
+CaseConfig randomBed(const std::vector<std::string>& sets, TimeScheme scheme = TimeScheme::Explicit) {
     std::vector<CaseOverride> overrides;
     for (const auto& s : sets) overrides.push_back(parseOverride(s));
     CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/random_bed", overrides);
-    c.time.scheme = TimeScheme::Explicit;
+    c.time.scheme = scheme;
+    c.liquid.bulkModulusGiven = true;  // the case's water under either scheme (docs/verification.md)
     return c;
 }
 
@@ -115,7 +116,8 @@ struct Column {
 /// case, `steps` each, compared; with `untilSpilled`, on until the weir has spilled for
 /// `steps` steps.
 template <int D>
-void compareWithOneRank(const CaseConfig& config, int steps = kSteps, bool untilSpilled = false) {
+void compareWithOneRank(const CaseConfig& config, int steps = kSteps, bool untilSpilled = false,
+                        double tolerance = kRoundOff) {
     const Communicator& world = Communicator::world();
     const bool root = world.rank() == 0;
     std::unique_ptr<Column<D>> one = root ? std::make_unique<Column<D>>(config, nullptr) : nullptr;
@@ -146,38 +148,38 @@ void compareWithOneRank(const CaseConfig& config, int steps = kSteps, bool until
     if (untilSpilled) {
         EXPECT_GT(a.cumulativeOutflow, 0) << "the weir must have spilled for the test to see it";
     }
-    expectClose(a.gateFlux, b.gateFlux, a.gateFlux, "gate flux");
-    expectClose(a.gatePressure, b.gatePressure, a.gatePressure, "gate pressure");
-    expectClose(a.waterSurface, b.waterSurface, a.waterSurface, "water surface");
-    expectClose(a.sandSurface, b.sandSurface, a.sandSurface, "sand surface");
-    expectClose(a.cumulativeInflow, b.cumulativeInflow, a.cumulativeInflow, "inflow");
-    expectClose(a.cumulativeOutflow, b.cumulativeOutflow, a.cumulativeInflow, "outflow");
-    expectClose(a.injectedVolume, b.injectedVolume, a.cumulativeInflow, "injected");
+    expectClose(a.gateFlux, b.gateFlux, a.gateFlux, "gate flux", tolerance);
+    expectClose(a.gatePressure, b.gatePressure, a.gatePressure, "gate pressure", tolerance);
+    expectClose(a.waterSurface, b.waterSurface, a.waterSurface, "water surface", tolerance);
+    expectClose(a.sandSurface, b.sandSurface, a.sandSurface, "sand surface", tolerance);
+    expectClose(a.cumulativeInflow, b.cumulativeInflow, a.cumulativeInflow, "inflow", tolerance);
+    expectClose(a.cumulativeOutflow, b.cumulativeOutflow, a.cumulativeInflow, "outflow", tolerance);
+    expectClose(a.injectedVolume, b.injectedVolume, a.cumulativeInflow, "injected", tolerance);
     // the residual is a difference of the stored water's volume: round-off of that volume
-    expectClose(a.ledgerResidual, b.ledgerResidual, a.liquidMass / config.liquid.density, "ledger residual");
-    expectClose(a.liquidMass, b.liquidMass, a.liquidMass, "liquid mass");
-    expectClose(a.gradient, b.gradient, 1.0, "gradient");
-    expectClose(a.bedHeight, b.bedHeight, a.bedHeight, "bed height");
-    expectClose(a.fluidisedFront, b.fluidisedFront, a.sandSurface, "fluidised front");
-    expectClose(a.fluidisedShare, b.fluidisedShare, 1.0, "fluidised share");
-    expectClose(a.solidMass, b.solidMass, a.solidMass, "solid mass");
+    expectClose(a.ledgerResidual, b.ledgerResidual, a.liquidMass / config.liquid.density, "ledger residual", tolerance);
+    expectClose(a.liquidMass, b.liquidMass, a.liquidMass, "liquid mass", tolerance);
+    expectClose(a.gradient, b.gradient, 1.0, "gradient", tolerance);
+    expectClose(a.bedHeight, b.bedHeight, a.bedHeight, "bed height", tolerance);
+    expectClose(a.fluidisedFront, b.fluidisedFront, a.sandSurface, "fluidised front", tolerance);
+    expectClose(a.fluidisedShare, b.fluidisedShare, 1.0, "fluidised share", tolerance);
+    expectClose(a.solidMass, b.solidMass, a.solidMass, "solid mass", tolerance);
     ASSERT_EQ(a.monitorFlux.size(), b.monitorFlux.size());
     for (std::size_t m = 0; m < a.monitorFlux.size(); ++m)
-        expectClose(a.monitorFlux[m], b.monitorFlux[m], a.gateFlux / config.grid.crossSectionArea, "monitor flux");
+        expectClose(a.monitorFlux[m], b.monitorFlux[m], a.gateFlux / config.grid.crossSectionArea, "monitor flux", tolerance);
     const auto pa = one->solver->profile();
     ASSERT_EQ(pa.size(), pb.size());
     double pScale = 0, sScale = 0;
     for (const auto& r : pa) pScale = std::max(pScale, std::abs(r.porePressure)), sScale = std::max(sScale, std::abs(r.verticalStress));
     for (std::size_t r = 0; r < pa.size(); ++r) {
-        expectClose(pa[r].porePressure, pb[r].porePressure, pScale, "row pore pressure");
-        expectClose(pa[r].verticalStress, pb[r].verticalStress, sScale, "row vertical stress");
-        expectClose(pa[r].horizontalStress, pb[r].horizontalStress, sScale, "row horizontal stress");
-        expectClose(pa[r].porosity, pb[r].porosity, 1.0, "row porosity");
-        expectClose(pa[r].minPorosity, pb[r].minPorosity, 1.0, "row least porosity");
-        expectClose(pa[r].maxPorosity, pb[r].maxPorosity, 1.0, "row largest porosity");
-        expectClose(pa[r].fluidisedShare, pb[r].fluidisedShare, 1.0, "row fluidised share");
+        expectClose(pa[r].porePressure, pb[r].porePressure, pScale, "row pore pressure", tolerance);
+        expectClose(pa[r].verticalStress, pb[r].verticalStress, sScale, "row vertical stress", tolerance);
+        expectClose(pa[r].horizontalStress, pb[r].horizontalStress, sScale, "row horizontal stress", tolerance);
+        expectClose(pa[r].porosity, pb[r].porosity, 1.0, "row porosity", tolerance);
+        expectClose(pa[r].minPorosity, pb[r].minPorosity, 1.0, "row least porosity", tolerance);
+        expectClose(pa[r].maxPorosity, pb[r].maxPorosity, 1.0, "row largest porosity", tolerance);
+        expectClose(pa[r].fluidisedShare, pb[r].fluidisedShare, 1.0, "row fluidised share", tolerance);
         expectClose(pa[r].filterVelocity, pb[r].filterVelocity, a.gateFlux / config.grid.crossSectionArea,
-                    "row filter velocity");
+                    "row filter velocity", tolerance);
         EXPECT_EQ(pa[r].solidCount, pb[r].solidCount) << "row " << r;
         EXPECT_EQ(pa[r].liquidCount, pb[r].liquidCount) << "row " << r;
     }
@@ -187,18 +189,18 @@ void compareWithOneRank(const CaseConfig& config, int steps = kSteps, bool until
         ASSERT_EQ(ca.state.size(), cb.state.size());
         for (std::size_t c = 0; c < ca.state.size(); ++c) {
             EXPECT_EQ(ca.state[c], cb.state[c]) << "cell " << c;
-            if (!std::isnan(ca.porosity[c])) expectClose(ca.porosity[c], cb.porosity[c], 1.0, "cell porosity");
+            if (!std::isnan(ca.porosity[c])) expectClose(ca.porosity[c], cb.porosity[c], 1.0, "cell porosity", tolerance);
         }
         for (std::size_t k = 0; k < ca.baseFlux.size(); ++k) {
-            expectClose(ca.baseFlux[k], cb.baseFlux[k], a.gateFlux, "column base flux");
+            expectClose(ca.baseFlux[k], cb.baseFlux[k], a.gateFlux, "column base flux", tolerance);
             EXPECT_EQ(std::isnan(ca.surface[k]), std::isnan(cb.surface[k])) << "column " << k;
-            if (!std::isnan(ca.surface[k])) expectClose(ca.surface[k], cb.surface[k], a.sandSurface, "column surface");
+            if (!std::isnan(ca.surface[k])) expectClose(ca.surface[k], cb.surface[k], a.sandSurface, "column surface", tolerance);
         }
     }
 
     // every point
-    expectSamePoints<D>(rows<D>(one->solver->solid(), true), rows<D>(solid, true), "solid", kRoundOff);
-    expectSamePoints<D>(rows<D>(one->solver->liquid(), false), rows<D>(liquid, false), "liquid", kRoundOff);
+    expectSamePoints<D>(rows<D>(one->solver->solid(), true), rows<D>(solid, true), "solid", tolerance);
+    expectSamePoints<D>(rows<D>(one->solver->liquid(), false), rows<D>(liquid, false), "liquid", tolerance);
 }
 
 TEST(ColumnOnRanks, ThePlaneRandomBedStepsAsOnOneRank) {
@@ -225,6 +227,43 @@ TEST(ColumnOnRanks, UGimpStepsAsOnOneRank) {
 TEST(ColumnOnRanks, TheWeirSpillsAsOnOneRank) {
     // the water rises to the rim and spills (a 0.2 s climb), then 200 steps more
     compareWithOneRank<2>(randomBed({"grid.width=0.1488"}), kSteps, true);
+}
+
+// The semi-implicit step: each rank's cells' rows solved over the ranks by hypre's CG with
+// BoomerAMG to a relative residual of 1e-10, one rank's by the sparse Cholesky factorisation.
+// They agree far closer than that bound: 1.6e-12 at worst on 2, 3 and 4 ranks (a solid point's
+// constitutive state; every series quantity within 1e-13), so the guard is 1e-11. Without the
+// increment of the window's cells from their owners the step blows up within 13 steps.
+constexpr double kSolveTolerance = 1e-11;
+
+TEST(ColumnOnRanks, ThePlaneRandomBedStepsAsOnOneRankWithTheSemiImplicitScheme) {
+    compareWithOneRank<2>(randomBed({"grid.width=0.1488"}, TimeScheme::SemiImplicit), kSteps, false, kSolveTolerance);
+}
+
+TEST(ColumnOnRanks, The3DRandomBedStepsAsOnOneRankWithTheSemiImplicitScheme) {
+    compareWithOneRank<3>(randomBed({"grid.dimension=3", "grid.cell_size=0.0186", "grid.width=0.2232",
+                                     "grid.cross_section_area=0.04981824"},
+                                    TimeScheme::SemiImplicit),
+                          kSteps, false, kSolveTolerance);
+}
+
+TEST(ColumnOnRanks, TheSemiImplicitWeirSpillsAsOnOneRank) {
+    compareWithOneRank<2>(randomBed({"grid.width=0.1488"}, TimeScheme::SemiImplicit), kSteps, true, kSolveTolerance);
+}
+
+TEST(ColumnOnRanks, TheSameRanksGiveTheSameBytesWithTheSemiImplicitScheme) {
+    const Communicator& world = Communicator::world();
+    const CaseConfig config = randomBed({"grid.width=0.1488"}, TimeScheme::SemiImplicit);
+    Column<2> first(config, &world), second(config, &world);
+    for (int k = 0; k < 50; ++k) {
+        first.solver->step();
+        second.solver->step();
+    }
+    const auto& a = first.solver->liquid();
+    const auto& b = second.solver->liquid();
+    ASSERT_EQ(a.size(), b.size());
+    EXPECT_TRUE(a.x == b.x && a.v == b.v && a.pressure == b.pressure);
+    EXPECT_TRUE(first.solver->solid().stress == second.solver->solid().stress);
 }
 
 TEST(ColumnOnRanks, TheSameRanksGiveTheSameBytes) {
