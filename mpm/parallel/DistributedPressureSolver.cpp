@@ -41,7 +41,9 @@ struct DistributedPressureSolver::Hypre {
     HYPRE_Solver amg = nullptr, pcg = nullptr;
     std::vector<HYPRE_BigInt> rows, cols;
     std::vector<HYPRE_Int> counts;
-    bool setUp = false;  ///< the AMG hierarchy built for the matrix (once per setMatrix)
+    bool setUp = false;  ///< the AMG hierarchy built (for the pattern, from some values of it)
+    int setUpIterations = 0;  ///< CG's iterations on the first solve after the hierarchy was built
+    int lastIterations = 0;
 
     void freeSolvers() {
         if (pcg) HYPRE_ParCSRPCGDestroy(pcg);
@@ -78,28 +80,11 @@ DistributedPressureSolver::DistributedPressureSolver(const Communicator& comm, I
 
 DistributedPressureSolver::~DistributedPressureSolver() = default;
 
-void DistributedPressureSolver::setMatrix(const std::vector<Index>& start, const std::vector<Index>& columns,
-                                          const std::vector<double>& values) {
-    Hypre& h = *hypre_;
-    const std::size_t n = h.rows.size();
-    QS_CHECK(start.size() == n + 1 && columns.size() == values.size() &&
-                 static_cast<std::size_t>(start.back()) == values.size(),
-             "DistributedPressureSolver::setMatrix: " << start.size() << " row starts for " << n << " rows, "
-                                                      << columns.size() << " columns, " << values.size() << " values");
-    h.freeSolvers();
-    if (h.A) HYPRE_IJMatrixDestroy(h.A);  // a new pattern: a new matrix
-    HYPRE_IJMatrixCreate(MPI_COMM_WORLD, h.first, h.last, h.first, h.last, &h.A);
-    HYPRE_IJMatrixSetObjectType(h.A, HYPRE_PARCSR);
-    HYPRE_IJMatrixInitialize(h.A);
-    h.counts.resize(n);
-    h.cols.assign(columns.begin(), columns.end());
-    for (std::size_t i = 0; i < n; ++i) h.counts[i] = static_cast<HYPRE_Int>(start[i + 1] - start[i]);
-    HYPRE_IJMatrixSetValues(h.A, static_cast<HYPRE_Int>(n), h.counts.data(), h.rows.data(), h.cols.data(), values.data());
-    HYPRE_IJMatrixAssemble(h.A);
-    HYPRE_IJMatrixGetObject(h.A, reinterpret_cast<void**>(&h.parA));
 
-    // CG with one BoomerAMG V-cycle a step: hypre's settings for 2D/3D Poisson-like systems, as
-    // the one-rank benchmark (tools/benchmarks/bench_pressure_amg.cpp)
+namespace {
+/// CG with one BoomerAMG V-cycle a step: hypre's settings for 2D/3D Poisson-like systems, as the
+/// one-rank benchmark (tools/benchmarks/bench_pressure_amg.cpp).
+void createSolvers(DistributedPressureSolver::Hypre& h) {
     HYPRE_BoomerAMGCreate(&h.amg);
     HYPRE_BoomerAMGSetCoarsenType(h.amg, 10);
     HYPRE_BoomerAMGSetInterpType(h.amg, 6);
@@ -116,6 +101,47 @@ void DistributedPressureSolver::setMatrix(const std::vector<Index>& start, const
     HYPRE_PCGSetPrintLevel(h.pcg, 0);
     HYPRE_PCGSetPrecond(h.pcg, reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSolve),
                         reinterpret_cast<HYPRE_PtrToSolverFcn>(HYPRE_BoomerAMGSetup), h.amg);
+}
+}  // namespace
+
+void DistributedPressureSolver::setMatrix(const std::vector<Index>& start, const std::vector<Index>& columns,
+                                          const std::vector<double>& values) {
+    Hypre& h = *hypre_;
+    const std::size_t n = h.rows.size();
+    QS_CHECK(start.size() == n + 1 && columns.size() == values.size() &&
+                 static_cast<std::size_t>(start.back()) == values.size(),
+             "DistributedPressureSolver::setMatrix: " << start.size() << " row starts for " << n << " rows, "
+                                                      << columns.size() << " columns, " << values.size() << " values");
+    // The same pattern (a time step's new values): written into the matrix in place, and the
+    // AMG hierarchy of earlier values kept as CG's preconditioner while it still works (its fine
+    // level smooths with the new values; the coarse levels are a step or more old). It is built
+    // anew when CG needs half as many iterations again as right after the last build (and two
+    // more): the build is most of a solve's cost (docs/performance.md, "The semi-implicit step on
+    // ranks"). Deterministic: the same values give the same builds on every run.
+    bool samePattern = h.A && h.counts.size() == n && std::equal(columns.begin(), columns.end(), h.cols.begin(), h.cols.end());
+    for (std::size_t i = 0; samePattern && i < n; ++i)
+        samePattern = h.counts[i] == static_cast<HYPRE_Int>(start[i + 1] - start[i]);
+    if (samePattern) {
+        HYPRE_IJMatrixInitialize(h.A);
+        HYPRE_IJMatrixSetValues(h.A, static_cast<HYPRE_Int>(n), h.counts.data(), h.rows.data(), h.cols.data(), values.data());
+        HYPRE_IJMatrixAssemble(h.A);
+        HYPRE_IJMatrixGetObject(h.A, reinterpret_cast<void**>(&h.parA));
+        if (h.setUp && h.lastIterations > (3 * h.setUpIterations) / 2 + 2) h.setUp = false;
+        return;
+    }
+    h.freeSolvers();
+    if (h.A) HYPRE_IJMatrixDestroy(h.A);  // a new pattern: a new matrix
+    HYPRE_IJMatrixCreate(MPI_COMM_WORLD, h.first, h.last, h.first, h.last, &h.A);
+    HYPRE_IJMatrixSetObjectType(h.A, HYPRE_PARCSR);
+    HYPRE_IJMatrixInitialize(h.A);
+    h.counts.resize(n);
+    h.cols.assign(columns.begin(), columns.end());
+    for (std::size_t i = 0; i < n; ++i) h.counts[i] = static_cast<HYPRE_Int>(start[i + 1] - start[i]);
+    HYPRE_IJMatrixSetValues(h.A, static_cast<HYPRE_Int>(n), h.counts.data(), h.rows.data(), h.cols.data(), values.data());
+    HYPRE_IJMatrixAssemble(h.A);
+    HYPRE_IJMatrixGetObject(h.A, reinterpret_cast<void**>(&h.parA));
+
+    createSolvers(h);
     h.setUp = false;  // the hierarchy is built with the first right-hand side
 }
 
@@ -141,7 +167,12 @@ int DistributedPressureSolver::solve(const std::vector<double>& b, std::vector<d
     HYPRE_IJVectorAssemble(h.x);
     HYPRE_IJVectorGetObject(h.x, reinterpret_cast<void**>(&h.parX));
     HYPRE_PCGSetTol(h.pcg, tolerance);
-    if (!h.setUp) {
+    const bool fresh = !h.setUp;
+    if (fresh) {
+        if (h.amg) {  // the hierarchy of earlier values: built anew for these
+            h.freeSolvers();
+            createSolvers(h);
+        }
         HYPRE_ParCSRPCGSetup(h.pcg, h.parA, h.parB, h.parX);
         h.setUp = true;
     }
@@ -151,6 +182,8 @@ int DistributedPressureSolver::solve(const std::vector<double>& b, std::vector<d
     HYPRE_PCGGetConverged(h.pcg, &converged);
     HYPRE_PCGGetNumIterations(h.pcg, &iterations);
     HYPRE_PCGGetFinalRelativeResidualNorm(h.pcg, &residual);
+    h.lastIterations = static_cast<int>(iterations);
+    if (fresh) h.setUpIterations = static_cast<int>(iterations);
     HYPRE_ClearAllErrors();
     HYPRE_IJVectorGetValues(h.x, static_cast<HYPRE_Int>(n), h.rows.data(), x.data());
     // a guess that is already the solution stops CG before its first step, unconverged by its

@@ -40,8 +40,9 @@ public:
     /// `tolerance` (two-norm); returns CG's iterations. Throws qs::Error if it does not get there.
     int solve(const std::vector<double>& b, std::vector<double>& x, double tolerance);
 
+    struct Hypre;  ///< hypre's objects (DistributedPressureSolver.cpp; opaque here)
+
 private:
-    struct Hypre;
     std::unique_ptr<Hypre> hypre_;
 };
 
