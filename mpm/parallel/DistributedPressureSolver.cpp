@@ -41,7 +41,8 @@ struct DistributedPressureSolver::Hypre {
     HYPRE_Solver amg = nullptr, pcg = nullptr;
     std::vector<HYPRE_BigInt> rows, cols;
     std::vector<HYPRE_Int> counts;
-    bool setUp = false;  ///< the AMG hierarchy built (for the pattern, from some values of it)
+    bool setUp = false;  ///< the AMG hierarchy fit for the values (built for them, or kept)
+    bool built = false;  ///< the solver objects hold a hierarchy (createSolvers makes them empty)
     int setUpIterations = 0;  ///< CG's iterations on the first solve after the hierarchy was built
     int lastIterations = 0;
 
@@ -85,6 +86,7 @@ namespace {
 /// CG with one BoomerAMG V-cycle a step: hypre's settings for 2D/3D Poisson-like systems, as the
 /// one-rank benchmark (tools/benchmarks/bench_pressure_amg.cpp).
 void createSolvers(DistributedPressureSolver::Hypre& h) {
+    h.built = false;
     HYPRE_BoomerAMGCreate(&h.amg);
     HYPRE_BoomerAMGSetCoarsenType(h.amg, 10);
     HYPRE_BoomerAMGSetInterpType(h.amg, 6);
@@ -166,16 +168,17 @@ int DistributedPressureSolver::solve(const std::vector<double>& b, std::vector<d
     HYPRE_IJVectorSetValues(h.x, static_cast<HYPRE_Int>(n), h.rows.data(), x.data());
     HYPRE_IJVectorAssemble(h.x);
     HYPRE_IJVectorGetObject(h.x, reinterpret_cast<void**>(&h.parX));
-    HYPRE_PCGSetTol(h.pcg, tolerance);
     const bool fresh = !h.setUp;
     if (fresh) {
-        if (h.amg) {  // the hierarchy of earlier values: built anew for these
+        if (h.built) {  // a hierarchy of earlier values: new solver objects, built for these
             h.freeSolvers();
             createSolvers(h);
         }
+        HYPRE_PCGSetTol(h.pcg, tolerance);
         HYPRE_ParCSRPCGSetup(h.pcg, h.parA, h.parB, h.parX);
-        h.setUp = true;
+        h.setUp = h.built = true;
     }
+    HYPRE_PCGSetTol(h.pcg, tolerance);
     HYPRE_ParCSRPCGSolve(h.pcg, h.parA, h.parB, h.parX);
     HYPRE_Int converged = 0, iterations = 0;
     HYPRE_Real residual = 0;
