@@ -56,9 +56,21 @@ def wait_for(path, process, seconds=180):
 
 
 def ranks_of(process):
-    """The quicksand processes mpirun started (its children)."""
-    out = subprocess.run(["pgrep", "-P", str(process.pid)], capture_output=True, text=True).stdout
-    return [int(p) for p in out.split()]
+    """The quicksand processes mpirun started (its children), from /proc (no procps needed)."""
+    children = []
+    for entry in os.listdir("/proc"):
+        if not entry.isdigit():
+            continue
+        try:
+            with open(f"/proc/{entry}/stat") as f:
+                stat = f.read()
+        except OSError:
+            continue
+        # pid (comm) state ppid ...: the name may hold spaces, so split after its ')'
+        fields = stat[stat.rindex(")") + 2:].split()
+        if int(fields[1]) == process.pid and "quicksand" in stat[stat.index("(") + 1:stat.rindex(")")]:
+            children.append(int(entry))
+    return sorted(children)
 
 
 def finish(process, what):
