@@ -78,11 +78,12 @@ void removeProcessorFolders(const fs::path& dir) {
     for (int n = processorFolders(dir); n-- > 0;) fs::remove_all(dir / ("processor" + std::to_string(n)));
 }
 
-/// The processors' fields as one case again (the times not yet reconstructed), for a resume on
-/// another number of ranks; the processor folders then go.
+/// The processors' fields as one case again, every time folder of theirs (over any of the same
+/// name: a serial run's fields written after its checkpoint are older than the ranks' that
+/// resumed from it), for a resume on another number of ranks; the processor folders then go.
 void reconstruct(const fs::path& dir, const std::string& log, const std::string& caseName) {
     const std::string program = fs::path(QUICKSAND_DECOMPOSEPAR).parent_path() / "reconstructPar";
-    const int rc = runUtility(program, dir, "-newTimes", log);
+    const int rc = runUtility(program, dir, "", log);
     QS_CHECK(rc == 0, "OpenFOAM case " << caseName << ": reconstructPar could not join the line's "
                                       << processorFolders(dir) << " processor folders in " << dir.string()
                                       << " (exit " << rc << ")" << lastFoamError(log) << "; see its messages in "
@@ -157,6 +158,11 @@ FoamReservoir::FoamReservoir(const CaseConfig& config, bool resume, const Commun
                                          << source.string() << " holds the run's output directory " << out.string()
                                          << "; give the OpenFOAM case its own folder beside case.toml");
         decomposed_ = ranks_ && requireDecomposition(caseName_, ranks_->size());
+        QS_CHECK(!decomposed_ || *QUICKSAND_FOAM_PLUGIN_MPI,
+                 "OpenFOAM case " << caseName_ << ": system/decomposeParDict asks for the line on " << ranks_->size()
+                                  << " MPI ranks, but this build has no OpenFOAM plugin on OpenFOAM's MPI Pstream "
+                                     "(quicksand built without MPI, or no MPI libPstream.so found at build time); "
+                                     "remove the dictionary to solve the line on rank 0");
     });
     workDir_ = fs::absolute(out / "openfoam").string();
     // OpenFOAM's output: rank 0's (Info, the master's) in openfoam.log; another rank's own
@@ -274,9 +280,10 @@ double FoamReservoir::solveWindow(double /*t*/, double dt, double flux) {
                         " s: " + userPaths(e.what()) + " (OpenFOAM's log: " + logFile_ + ")");
         }
     });
-    // rank 0's pressure on every rank (p + 0 + ... is p, bit for bit); a decomposed line's is
-    // already OpenFOAM's sum over every rank's gate faces
-    if (ranks_ && !decomposed_) p = ranks_->sum(tube_ ? p : 0.0);
+    // rank 0's pressure on every rank (p + 0 + ... is p, bit for bit). A decomposed line's is
+    // OpenFOAM's sum over every rank's gate faces on each rank already, but MPI does not promise
+    // an Allreduce the same bits everywhere, and the ranks' columns must not part by an ulp
+    if (ranks_) p = ranks_->sum(ranks_->rank() == 0 ? p : 0.0);
     pending_ = true;
     return density_ * p;
 }

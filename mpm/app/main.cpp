@@ -114,9 +114,9 @@ int main(int argc, char** argv) {
         std::ostringstream report;
         try {
             qs::printCheckReport(config, report);
-            if (ranks > 1 && config.grid.dimension == 1 && config.reservoir.kind == qs::ReservoirKind::OpenFoam) {
-                // not cut: each rank steps the 1D column whole beside its part of the line
-                report << "decomposition: " << ranks << " ranks: the 1D column is stepped whole on each; the OpenFOAM "
+            if (ranks > 1 && config.reservoir.kind == qs::ReservoirKind::OpenFoam) {
+                // not cut: each rank steps the column whole beside its part of the line
+                report << "decomposition: " << ranks << " ranks: the column is stepped whole on each; the OpenFOAM "
                        << "line is decomposed by its system/decomposeParDict (numberOfSubdomains " << ranks
                        << "), or solved on rank 0 without one (docs/openfoam.md, \"A line on MPI ranks\")\n";
             } else {

@@ -1,5 +1,7 @@
 #include "parallel/DistributedPressureSolver.hpp"
 
+#include <sstream>
+
 #include <algorithm>
 #include <string>
 
@@ -45,6 +47,7 @@ struct DistributedPressureSolver::Hypre {
     bool built = false;  ///< the solver objects hold a hierarchy (createSolvers makes them empty)
     int setUpIterations = 0;  ///< CG's iterations on the first solve after the hierarchy was built
     int lastIterations = 0;
+    std::vector<double> guess;  ///< the caller's first guess, kept for a second attempt
 
     void freeSolvers() {
         if (pcg) HYPRE_ParCSRPCGDestroy(pcg);
@@ -123,6 +126,9 @@ void DistributedPressureSolver::setMatrix(const std::vector<Index>& start, const
     bool samePattern = h.A && h.counts.size() == n && std::equal(columns.begin(), columns.end(), h.cols.begin(), h.cols.end());
     for (std::size_t i = 0; samePattern && i < n; ++i)
         samePattern = h.counts[i] == static_cast<HYPRE_Int>(start[i + 1] - start[i]);
+    // the in-place update and the new matrix are each collective: every rank takes the same one
+    const bool samePatternOnSomeRank = Communicator::world().any(samePattern);
+    samePattern = !Communicator::world().any(!samePattern);
     if (samePattern) {
         HYPRE_IJMatrixInitialize(h.A);
         HYPRE_IJMatrixSetValues(h.A, static_cast<HYPRE_Int>(n), h.counts.data(), h.rows.data(), h.cols.data(), values.data());
@@ -131,6 +137,8 @@ void DistributedPressureSolver::setMatrix(const std::vector<Index>& start, const
         if (h.setUp && h.lastIterations > (3 * h.setUpIterations) / 2 + 2) h.setUp = false;
         return;
     }
+    QS_CHECK(!samePatternOnSomeRank, "DistributedPressureSolver::setMatrix: the matrix's pattern changed on some "
+                                     "ranks and not on others");
     h.freeSolvers();
     if (h.A) HYPRE_IJMatrixDestroy(h.A);  // a new pattern: a new matrix
     HYPRE_IJMatrixCreate(MPI_COMM_WORLD, h.first, h.last, h.first, h.last, &h.A);
@@ -147,6 +155,8 @@ void DistributedPressureSolver::setMatrix(const std::vector<Index>& start, const
     h.setUp = false;  // the hierarchy is built with the first right-hand side
 }
 
+void DistributedPressureSolver::rebuildPreconditioner() { hypre_->setUp = false; }
+
 int DistributedPressureSolver::solve(const std::vector<double>& b, std::vector<double>& x, double tolerance) {
     Hypre& h = *hypre_;
     const std::size_t n = h.rows.size();
@@ -160,40 +170,48 @@ int DistributedPressureSolver::solve(const std::vector<double>& b, std::vector<d
         std::fill(x.begin(), x.end(), 0.0);
         return 0;
     }
-    HYPRE_IJVectorInitialize(h.b);
-    HYPRE_IJVectorSetValues(h.b, static_cast<HYPRE_Int>(n), h.rows.data(), b.data());
-    HYPRE_IJVectorAssemble(h.b);
-    HYPRE_IJVectorGetObject(h.b, reinterpret_cast<void**>(&h.parB));
-    HYPRE_IJVectorInitialize(h.x);
-    HYPRE_IJVectorSetValues(h.x, static_cast<HYPRE_Int>(n), h.rows.data(), x.data());
-    HYPRE_IJVectorAssemble(h.x);
-    HYPRE_IJVectorGetObject(h.x, reinterpret_cast<void**>(&h.parX));
-    const bool fresh = !h.setUp;
-    if (fresh) {
-        if (h.built) {  // a hierarchy of earlier values: new solver objects, built for these
-            h.freeSolvers();
-            createSolvers(h);
-        }
-        HYPRE_PCGSetTol(h.pcg, tolerance);
-        HYPRE_ParCSRPCGSetup(h.pcg, h.parA, h.parB, h.parX);
-        h.setUp = h.built = true;
-    }
-    HYPRE_PCGSetTol(h.pcg, tolerance);
-    HYPRE_ParCSRPCGSolve(h.pcg, h.parA, h.parB, h.parX);
+    h.guess.assign(x.begin(), x.end());
     HYPRE_Int converged = 0, iterations = 0;
     HYPRE_Real residual = 0;
-    HYPRE_PCGGetConverged(h.pcg, &converged);
-    HYPRE_PCGGetNumIterations(h.pcg, &iterations);
-    HYPRE_PCGGetFinalRelativeResidualNorm(h.pcg, &residual);
-    h.lastIterations = static_cast<int>(iterations);
-    if (fresh) h.setUpIterations = static_cast<int>(iterations);
-    HYPRE_ClearAllErrors();
+    for (;;) {
+        HYPRE_IJVectorInitialize(h.b);
+        HYPRE_IJVectorSetValues(h.b, static_cast<HYPRE_Int>(n), h.rows.data(), b.data());
+        HYPRE_IJVectorAssemble(h.b);
+        HYPRE_IJVectorGetObject(h.b, reinterpret_cast<void**>(&h.parB));
+        HYPRE_IJVectorInitialize(h.x);
+        HYPRE_IJVectorSetValues(h.x, static_cast<HYPRE_Int>(n), h.rows.data(), h.guess.data());
+        HYPRE_IJVectorAssemble(h.x);
+        HYPRE_IJVectorGetObject(h.x, reinterpret_cast<void**>(&h.parX));
+        const bool fresh = !h.setUp;
+        if (fresh) {
+            if (h.built) {  // a hierarchy of earlier values: new solver objects, built for these
+                h.freeSolvers();
+                createSolvers(h);
+            }
+            HYPRE_PCGSetTol(h.pcg, tolerance);
+            HYPRE_ParCSRPCGSetup(h.pcg, h.parA, h.parB, h.parX);
+            h.setUp = h.built = true;
+        }
+        HYPRE_PCGSetTol(h.pcg, tolerance);
+        HYPRE_ParCSRPCGSolve(h.pcg, h.parA, h.parB, h.parX);
+        HYPRE_PCGGetConverged(h.pcg, &converged);
+        HYPRE_PCGGetNumIterations(h.pcg, &iterations);
+        HYPRE_PCGGetFinalRelativeResidualNorm(h.pcg, &residual);
+        h.lastIterations = static_cast<int>(iterations);
+        if (fresh) h.setUpIterations = static_cast<int>(iterations);
+        HYPRE_ClearAllErrors();
+        // a guess that is already the solution stops CG before its first step, unconverged by
+        // its flag and at a residual of zero. PCG's verdict is the same on every rank.
+        if (converged || residual <= tolerance || fresh) break;
+        h.setUp = false;  // a kept hierarchy that no longer fits the values: built anew, solved again
+    }
     HYPRE_IJVectorGetValues(h.x, static_cast<HYPRE_Int>(n), h.rows.data(), x.data());
-    // a guess that is already the solution stops CG before its first step, unconverged by its
-    // flag and at a residual of zero
-    QS_CHECK(converged || residual <= tolerance,
-             "the distributed pressure solve (CG with BoomerAMG) did not reach a relative residual of "
-                 << tolerance << " in " << iterations << " iterations (" << residual << ")");
+    if (!(converged || residual <= tolerance)) {
+        std::ostringstream m;
+        m << "the distributed pressure solve (CG with BoomerAMG) did not reach a relative residual of " << tolerance
+          << " in " << iterations << " iterations (" << residual << ")";
+        throw SharedError(m.str());  // every rank meets it alike: said once
+    }
     return static_cast<int>(iterations);
 }
 
@@ -208,6 +226,7 @@ DistributedPressureSolver::DistributedPressureSolver(const Communicator&, Index,
 DistributedPressureSolver::~DistributedPressureSolver() = default;
 void DistributedPressureSolver::setMatrix(const std::vector<Index>&, const std::vector<Index>&,
                                           const std::vector<double>&) {}
+void DistributedPressureSolver::rebuildPreconditioner() {}
 int DistributedPressureSolver::solve(const std::vector<double>&, std::vector<double>&, double) { return 0; }
 
 #endif

@@ -36,8 +36,14 @@ public:
     /// [start[i], start[i + 1]) of columns (global rows) and values. The preconditioner is
     /// rebuilt for it.
     void setMatrix(const std::vector<Index>& start, const std::vector<Index>& columns, const std::vector<double>& values);
+    /// The next solve builds the AMG hierarchy anew for the matrix's values (as it does by itself
+    /// when CG slows): after a change that alters the matrix much (the semi-implicit step's held
+    /// cells), and at a checkpoint, so that a resumed run builds where the run it continues did.
+    void rebuildPreconditioner();
     /// Solves A x = b for this rank's rows, from x as the first guess, to a relative residual of
-    /// `tolerance` (two-norm); returns CG's iterations. Throws qs::Error if it does not get there.
+    /// `tolerance` (two-norm); returns CG's iterations. A kept hierarchy that fails is built anew
+    /// and the solve tried once more. Throws qs::SharedError (alike on every rank) if it does not
+    /// get there.
     int solve(const std::vector<double>& b, std::vector<double>& x, double tolerance);
 
     struct Hypre;  ///< hypre's objects (DistributedPressureSolver.cpp; opaque here)

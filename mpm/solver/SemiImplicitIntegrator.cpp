@@ -88,6 +88,8 @@ std::vector<double> SemiImplicitIntegrator<D>::saveState() const {
     std::vector<double> state(dp_.data(), dp_.data() + dp_.size());
     state.insert(state.end(), gateY_.data(), gateY_.data() + gateY_.size());
     if (ctx_.ranks) {  // each cell's from its owner (collective)
+        // and a resumed run's first solve builds its AMG hierarchy anew: so does this one's next
+        distributed_->rebuildPreconditioner();
         const Index nc = ctx_.grid.numCells();
         for (Index c = 0; c < nc; ++c)
             if (!owns(c)) state[c] = state[nc + c] = 0;
@@ -150,6 +152,9 @@ Real SemiImplicitIntegrator<D>::solveVelocities(const StepInputs& in, Real time)
         ++solves_;
         if (solves_ > kMaxSolves) break;  // the pass after the cap, with the set as it stands
         changed = updateHeldCells(in.dt);
+        // held rows become the identity's (and free ones leave it): a kept AMG hierarchy of the
+        // pass before fits the new matrix badly
+        if (changed && distributed_) distributed_->rebuildPreconditioner();
     }
     stats_.steps += 1;
     stats_.solves += solves_;
@@ -287,20 +292,21 @@ void SemiImplicitIntegrator<D>::writeColumn(Index c, const Real* entry) {
 
 template <int D>
 void SemiImplicitIntegrator<D>::solve(Real dt, Real time) {
-    auto fail = [&](const std::string& what) {
+    auto message = [&](const std::string& what) {
         std::ostringstream s;
         s << "numerical failure at t = " << time << " s: the semi-implicit step's pressure solve "
-          << what << " (" << system_.cells() << " cells, " << system_.solverName()
+          << what << " (" << system_.cells() << " cells, " << stats_.solver
           << ", dt = " << dt << " s); a smaller time.courant, or time.scheme = \"explicit\", may get past it";
-        throw Error(s.str());
+        return s.str();
     };
+    auto fail = [&](const std::string& what) { throw Error(message(what)); };
     // one rank: the system's own solver; over ranks: hypre's, which throws its own failure
     auto solveSystem = [&](const Eigen::VectorXd& b, Eigen::VectorXd& x) {
         if (distributed_) {
             try {
                 stats_.iterations += solveDistributed(b, x);
-            } catch (const Error& e) {
-                fail(std::string("over the ranks failed: ") + e.what());
+            } catch (const SharedError& e) {  // every rank's solve failed alike: said once
+                throw SharedError(message(std::string("over the ranks failed: ") + e.what()));
             }
             return true;
         }

@@ -137,9 +137,11 @@ public:
           checkpointPath_(outDir_ / "checkpoint.h5"),
           windowed_(options.windowedModel || config.reservoir.kind == ReservoirKind::OpenFoam),
           ranks_(options.ranks && options.ranks->parallel() ? options.ranks : nullptr),
-          // a 1D column beside a line on ranks is stepped whole on every rank (it cannot be cut,
-          // and it costs little beside the line, which is decomposed)
-          columnRanks_(ranks_ && !(D == 1 && windowed_) ? ranks_ : nullptr),
+          // a column beside a line on ranks is stepped whole on every rank, the line decomposed:
+          // a 1D column cannot be cut and costs little beside the line, and a cut column's
+          // implicit coupling would need a rollback of each rank's own points (its checkpoint
+          // gathers them to rank 0), which is not built yet
+          columnRanks_(ranks_ && !windowed_ ? ranks_ : nullptr),
           root_(!ranks_ || ranks_->rank() == 0) {
         open();
     }
@@ -249,18 +251,31 @@ void RunOf<D>::open() {
 
     if (options_.resume) {
         // every rank reads the whole checkpoint (it resumes on any number of ranks) and keeps its
-        // block's points; a checkpoint that cannot be read fails alike on every rank
+        // block's points; a checkpoint that cannot be read fails alike on every rank. The model's
+        // state (an OpenFOAM line reopened at the checkpoint's time, in agreed stages of its own)
+        // is a stage of its own after that: every rank enters it, or none
+        CheckpointData data;
+        const auto refused = [&](const Error& e) {
+            std::string what = e.what();
+            if (what.rfind(checkpointPath_.string(), 0) != 0) what = checkpointPath_.string() + ": " + what;
+            return what + ". This checkpoint cannot be resumed from; run without --resume to start again (the "
+                          "results now in " + outDir_.string() + " are then kept as " + outDir_.string() + ".previous)";
+        };
         agreeOnErrors(ranks_, [&] {
             try {
-                const CheckpointData data = readCheckpoint(checkpointPath_.string());
+                data = readCheckpoint(checkpointPath_.string());
                 solver_->loadState(data);
-                advancer_->load(data);
             } catch (const Error& e) {
-                std::string what = e.what();
-                if (what.rfind(checkpointPath_.string(), 0) != 0) what = checkpointPath_.string() + ": " + what;
-                throw Error(what + ". This checkpoint cannot be resumed from; run without --resume to start again (the "
-                                   "results now in " + outDir_.string() + " are then kept as " + outDir_.string() +
-                            ".previous)");
+                throw Error(refused(e));
+            }
+        });
+        agreeOnErrors(ranks_, [&] {
+            try {
+                advancer_->load(data);
+            } catch (const SharedError& e) {
+                throw SharedError(refused(e));
+            } catch (const Error& e) {
+                throw Error(refused(e));
             }
         });
     } else {
@@ -322,7 +337,7 @@ void RunOf<D>::printHeader() {
                 now.solidPoints, now.liquidPoints, s.time(), plannedEnd_,
                 windowed_ ? (", coupled to " + model_->name()).c_str() : "");
     if (ranks_ && !columnRanks_)
-        std::printf("quicksand: %d MPI ranks: the 1D column is stepped whole on each, beside the line\n", ranks_->size());
+        std::printf("quicksand: %d MPI ranks: the column is stepped whole on each, beside the line\n", ranks_->size());
     if (columnRanks_) {
         const Decomposition& d = s.rankShare()->decomposition();
         std::printf("quicksand: %d MPI ranks, blocks of whole columns %d x %d, %d cells of ghost points beside each "

@@ -123,7 +123,7 @@ for ranks, split in ((2, "2 1 1"), (3, "3 1 1")):
     case = make_case(f"decomposed{ranks}", ranks, split)
     c = subprocess.run([*mpiexec, "-np", str(ranks), quicksand, "check", case], capture_output=True, text=True,
                        timeout=120)
-    if c.returncode != 0 or c.stdout.count("the 1D column is stepped whole on each") != 1:
+    if c.returncode != 0 or c.stdout.count("the column is stepped whole on each") != 1:
         fail(f"check on {ranks} ranks (exit {c.returncode}) did not say once how the run is spread:\n"
              + c.stdout[-2000:] + c.stderr[-2000:])
     p = run(case, ranks=ranks)
