@@ -126,9 +126,9 @@ elif not os.path.isdir(steps):
     fail(f"rank0_error: no {steps} to remove (the field writer's layout changed?)")
 else:
     time.sleep(0.5)
-    shutil.rmtree(steps)
+    os.rename(steps, steps + ".gone")  # at once: rank 0 may be writing a step file into it
     rc, out, err = finish(run, "rank0_error")
-    print(f"rank0_error: output/fields/ removed under the run, mpirun exited {rc}", flush=True)
+    print(f"rank0_error: output/fields/ moved away under the run, mpirun exited {rc}", flush=True)
     said = err.count("quicksand: error: rank 0:")
     if rc == 0:
         fail("rank0_error: the run went on without its step files' folder and exited 0")

@@ -9,7 +9,8 @@ its OpenFOAM tube (a wedge, 5 x 10 cells), run to 0.05 s:
  2. decomposed over 2 and over 3 ranks (decomposePar, method simple along the tube: the gate's
     faces on one rank, the reservoir's on another), each rank its processorN/: the gate's flux and
     pressure and the column's series within the line's solver tolerance of the one-rank run
-    (tolerance 1e-6 of each quantity's scale; guard 1e-7, achieved about 1e-8);
+    (tolerance 1e-6 of each quantity's scale; guard 1e-7, achieved about 1e-8); the same with a
+    2D column (stepped whole on each rank);
  3. reconstructPar on output/openfoam/ gives the serial run's time folders, with its pressure
     field within 1e-6 m2/s2 (the p solver's tolerance is 1e-6 absolute);
  4. checkpoints across rank counts: 1 then 2 ranks, and 2 then 1, against 1 then 1 (the same
@@ -53,8 +54,9 @@ def make_case(name, parts=None, split=None):
     return case
 
 
-def run(case, ranks=1, end=0.05, resume=False, expect=0):
-    cmd = ([*mpiexec, "-np", str(ranks)] if ranks > 1 else []) + [quicksand, "run", case, "--set", f"time.end={end}"]
+def run(case, ranks=1, end=0.05, resume=False, expect=0, extra=()):
+    cmd = (([*mpiexec, "-np", str(ranks)] if ranks > 1 else []) + [quicksand, "run", case, "--set", f"time.end={end}"]
+           + list(extra))
     if resume:
         cmd.append("--resume")
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
@@ -133,6 +135,16 @@ for ranks, split in ((2, "2 1 1"), (3, "3 1 1")):
         if not os.path.isdir(os.path.join(case, f"output/openfoam/processor{r}/0.05")):
             fail(f"the line on {ranks} ranks wrote no output/openfoam/processor{r}/0.05")
     compare(f"decomposed over {ranks} ranks against one", serial, case)
+
+# 2b. a 2D column beside the decomposed line: stepped whole on every rank (a cut column's
+# implicit coupling would need a rollback of each rank's own points), against one rank
+PLANE = ["--set", "grid.dimension=2", "--set", "grid.width=0.0372"]
+plane1, plane2 = make_case("plane1"), make_case("plane2", 2, "2 1 1")
+run(plane1, extra=PLANE)
+p = run(plane2, ranks=2, extra=PLANE)
+if "the column is stepped whole on each" not in p.stdout:
+    fail("a 2D column beside a line on 2 ranks did not say it is stepped whole on each:\n" + p.stdout)
+compare("a 2D column, the line decomposed over 2 ranks, against one", plane1, plane2)
 
 # 3. reconstructPar gives the serial run's folders and fields
 decomposed = os.path.join(work, "decomposed2")
