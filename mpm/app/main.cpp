@@ -114,14 +114,19 @@ int main(int argc, char** argv) {
         std::ostringstream report;
         try {
             qs::printCheckReport(config, report);
-            if (ranks > 1 && config.reservoir.kind == qs::ReservoirKind::OpenFoam) {
-                // not cut: each rank steps the column whole beside its part of the line
-                report << "decomposition: " << ranks << " ranks: the column is stepped whole on each; the OpenFOAM "
-                       << "line is decomposed by its system/decomposeParDict (numberOfSubdomains " << ranks
-                       << "), or solved on rank 0 without one (docs/openfoam.md, \"A line on MPI ranks\")\n";
+            const bool line = config.reservoir.kind == qs::ReservoirKind::OpenFoam;
+            if (ranks > 1 && line && !qs::decomposable(config, ranks)) {
+                // 1D, or too few columns: each rank steps the column whole beside its part of the line
+                report << "decomposition: " << ranks << " ranks: the column is stepped whole on each ("
+                       << (config.grid.dimension == 1 ? "a 1D column is not cut" : "too few columns to cut")
+                       << "); the OpenFOAM line is decomposed by its system/decomposeParDict (numberOfSubdomains "
+                       << ranks << "), or solved on rank 0 without one (docs/openfoam.md, \"A line on MPI ranks\")\n";
             } else {
                 const qs::Decomposition d = qs::decompose(config, ranks);
                 if (ranks > 1) report << qs::describe(d);
+                if (ranks > 1 && line)
+                    report << "decomposition: the OpenFOAM line is decomposed by its system/decomposeParDict "
+                           << "(numberOfSubdomains " << ranks << "), or solved on rank 0 without one\n";
             }
         } catch (const qs::Error& e) {
             failure = e.what();

@@ -57,8 +57,9 @@ public:
     void step() override { s_.step(); }
     double time() const override { return s_.time(); }
     double dt() const override { return s_.dt(); }
-    void save(CheckpointData& d) const override { s_.saveState(d); }
-    void load(const CheckpointData& d) override { s_.loadState(d); }
+    // a window's start, not a checkpoint: over MPI ranks each rank keeps its own (no gather)
+    void save(CheckpointData& d) const override { s_.saveWindowStart(d); }
+    void load(const CheckpointData& d) override { s_.loadWindowStart(d); }
 
 private:
     Solver& s_;

@@ -102,13 +102,17 @@ Decomposition blocksOf(const CaseConfig& config, const std::array<Index, 3>& cel
         if (d.cuts[a].empty()) return Decomposition{};
     }
     const EntityBytes bytes = entityBytes(config);
+    const Index windowLayers = ghostPointLayers(config);
+    d.windowLayers = static_cast<int>(windowLayers);
+    Index gridNodes = 1, gridCells = 1;
+    for (int a = 0; a < D; ++a) gridNodes *= cells[a] + 1, gridCells *= cells[a];
     const double densest = 1.25 * freeWaterPointsPerCell(config) * std::pow(config.points.liquidPerCell, D - 1);
     for (int kz = 0; kz < parts[2]; ++kz)
         for (int ky = 0; ky < parts[1]; ++ky)
             for (int kx = 0; kx < parts[0]; ++kx) {
                 const std::array<int, 3> k{kx, ky, kz};
                 DecompositionBlock b;
-                Index owned = 1, reach = 1, columns = 1, ghostCells = 1;
+                Index owned = 1, reach = 1, columns = 1;
                 b.cells = 1;
                 for (int a = 0; a < 3; ++a) {
                     b.cellBegin[a] = d.cuts[a][k[a]];
@@ -121,7 +125,6 @@ Decomposition blocksOf(const CaseConfig& config, const std::array<Index, 3>& cel
                     const Index lo = std::max<Index>(0, b.cellBegin[a] - ghostLayers);
                     const Index hi = std::min<Index>(cells[a], b.cellEnd[a] + ghostLayers);
                     reach *= hi - lo + 1;
-                    ghostCells *= hi - lo;
                     if (a < D - 1) columns *= extent;
                 }
                 b.nodes = owned;
@@ -130,9 +133,21 @@ Decomposition blocksOf(const CaseConfig& config, const std::array<Index, 3>& cel
                     b.solidPoints += columns * rows.solid[r];
                     b.liquidPoints += columns * rows.liquid[r];
                 }
-                const double liquidCapacity = std::max(densest * double(ghostCells), b.liquidPoints);
-                b.bytes = b.solidPoints * bytes.solid + liquidCapacity * bytes.liquid + double(reach) * bytes.node +
-                          double(ghostCells) * bytes.cell;
+                // the window of ghost points the step keeps: its columns beyond the block's, over
+                // the block's rows, at the block's points per column
+                Index windowColumns = 1;
+                for (int a = 0; a < D - 1; ++a)
+                    windowColumns *= std::min<Index>(cells[a], b.cellEnd[a] + windowLayers) -
+                                     std::max<Index>(0, b.cellBegin[a] - windowLayers);
+                const double points = b.solidPoints + b.liquidPoints;
+                b.ghostPoints = columns > 0 ? points * double(windowColumns - columns) / double(columns) : 0.0;
+                // today's step keeps the whole grid's node and cell arrays on every rank, and its
+                // points with the window's copies (docs/parallel.md)
+                const double windowCells = double(windowColumns) * double(b.cellEnd[D - 1] - b.cellBegin[D - 1]);
+                const double liquidCapacity =
+                    std::max(densest * windowCells, b.liquidPoints * double(windowColumns) / double(columns));
+                b.bytes = b.solidPoints * double(windowColumns) / double(columns) * bytes.solid +
+                          liquidCapacity * bytes.liquid + double(gridNodes) * bytes.node + double(gridCells) * bytes.cell;
                 d.blocks.push_back(b);
             }
     return d;
@@ -204,6 +219,19 @@ Decomposition decomposeAs(const CaseConfig& config, const std::array<int, 3>& pa
     return d;
 }
 
+int ghostPointLayers(const CaseConfig& config) {
+    return config.grid.shapeFunctions == ShapeFunctionKind::Gimp ? 4 : 3;
+}
+
+bool decomposable(const CaseConfig& config, int ranks) {
+    try {
+        decompose(config, ranks);
+        return true;
+    } catch (const Error&) {
+        return false;
+    }
+}
+
 Decomposition decompose(const CaseConfig& config, int ranks) {
     QS_CHECK(ranks >= 1, "the number of ranks is " << ranks << ", expected 1 or more");
     const int D = config.grid.dimension;
@@ -243,11 +271,11 @@ std::string describe(const Decomposition& d) {
     s << "decomposition: " << d.ranks << " rank" << (d.ranks > 1 ? "s" : "") << ", ";
     for (int a = 0; a < D; ++a) s << (a ? " x " : "") << d.parts[a];
     s << " blocks (" << (d.columnsWhole() ? "columns whole" : "columns cut across the vertical") << "), "
-      << d.ghostLayers << " ghost layer" << (d.ghostLayers > 1 ? "s" : "") << ", point imbalance "
+      << d.windowLayers << " cells of ghost points beside each cut, point imbalance "
       << std::round(1000 * d.imbalance()) / 1000 << "\n";
     s << "  rank  cells";
     for (int a = 0; a < D; ++a) s << "  " << axis[D == 1 ? 2 : (a == D - 1 ? 2 : a)] << "-range";
-    s << "   nodes   ghost   solid pts  liquid pts   memory\n";
+    s << "   nodes   solid pts  liquid pts  ghost pts   memory\n";
     char line[256];
     for (std::size_t r = 0; r < d.blocks.size(); ++r) {
         const auto& b = d.blocks[r];
@@ -258,8 +286,8 @@ std::string describe(const Decomposition& d) {
                           static_cast<long long>(b.cellEnd[a]));
             s << line;
         }
-        std::snprintf(line, sizeof line, " %7lld %7lld %11.0f %11.0f   %s\n", static_cast<long long>(b.nodes),
-                      static_cast<long long>(b.ghostNodes), b.solidPoints, b.liquidPoints, formatBytes(b.bytes).c_str());
+        std::snprintf(line, sizeof line, " %7lld %11.0f %11.0f %10.0f   %s\n", static_cast<long long>(b.nodes),
+                      b.solidPoints, b.liquidPoints, b.ghostPoints, formatBytes(b.bytes).c_str());
         s << line;
     }
     return s.str();

@@ -41,20 +41,6 @@
 
 namespace qs {
 
-/// Cells of ghost points beside a cut: how far a step's phases reach from a point to the points
-/// whose update it enters, within one step (what the step carries to the next, the cells'
-/// pressure gradient and the nodes' relative speed, is the owners', shareCarried). Measured by
-/// the comparison with one rank (tests/mpi/test_ColumnOnRanks.cpp, 200 steps of the random bed
-/// on 2, 3 and 4 ranks): linear shape functions agree to round-off (1e-13) from 1 layer, uGIMP
-/// from 3 (with 2 it was 2.4e-11 off; with no ghosts the gate flux is 50 % off). Two layers more
-/// than that for linear, one for uGIMP, are kept for what those 200 steps from a lattice do not
-/// exercise (a fluidised bed's front diffusion, cavities). Before the carried state was shared,
-/// 4 layers left the axisymmetric bed on 3 ranks 3e-10 off: an error carried from the window's
-/// edge one cell inwards a step.
-inline int ghostPointLayers(const CaseConfig& config) {
-    return config.grid.shapeFunctions == ShapeFunctionKind::Gimp ? 4 : 3;
-}
-
 template <int D>
 class RankShare {
 public:
@@ -106,10 +92,18 @@ public:
     int ownerOfCell(Index c) const { return cellOwner_[c]; }
     bool ownsNode(Index i) const { return nodeOwned_[i] != 0; }
     bool ownsColumn(Index column) const { return columnOwned_[column] != 0; }
+    /// Cells of the block and its window: where this rank's points, owned and ghosts, can be.
+    Index windowCells() const { return static_cast<Index>(std::count(inMyWindow_.begin(), inMyWindow_.end(), 1)); }
     /// Points sent and received by the last exchange, and the values sent (for the figures of
     /// docs/performance.md: what crosses a cut per step).
     std::size_t sentPoints() const { return sent_; }
     std::size_t sentValues() const { return sentValues_; }
+    /// Values (8 B each) this rank has sent its neighbours since it was made, over every
+    /// exchange: the points with their ghost copies, the carried state, the cell values of the
+    /// semi-implicit step. Over the steps taken, the traffic of docs/performance.md's model.
+    double valuesSentInAll() const { return valuesSentInAll_; }
+    /// Steps this rank has exchanged points for (a coupling window's repeats included).
+    long stepsExchanged() const { return stepsExchanged_; }
 
     /// Keeps the points of the block (after the column is built on every rank alike).
     template <class Set>
@@ -147,6 +141,7 @@ public:
             sentValues_ += send_[k].size();
         }
         comm_.exchange(neighbours_, countsOut_, countsIn_);
+        valuesSentInAll_ += double(sentValues_ + neighbours_.size());
         for (std::size_t k = 0; k < neighbours_.size(); ++k)
             recv_[k].resize(static_cast<std::size_t>(countsIn_[k][0]) * width);
         comm_.exchange(neighbours_, send_, recv_);
@@ -181,6 +176,8 @@ public:
             carriedIn_[k].resize(in);
         }
         comm_.exchange(neighbours_, carriedOut_, carriedIn_);
+        ++stepsExchanged_;
+        for (const auto& out : carriedOut_) valuesSentInAll_ += double(out.size());
         for (std::size_t k = 0; k < n; ++k) {
             std::size_t at = 0;
             cells.forEachStateField([&](std::vector<Real>& f, const FieldSpec& spec) {
@@ -208,6 +205,7 @@ public:
             valuesIn_[k].resize(cellsIn_[k].size() * sizeof...(Arrays));
         }
         comm_.exchange(neighbours_, valuesOut_, valuesIn_);
+        for (const auto& out : valuesOut_) valuesSentInAll_ += double(out.size());
         for (std::size_t k = 0; k < n; ++k) {
             std::size_t at = 0;
             for (Index c : cellsIn_[k])
@@ -328,6 +326,8 @@ private:
     std::vector<std::vector<double>> send_, recv_, countsOut_, countsIn_;
     std::vector<char> drop_;
     std::size_t sent_ = 0, sentValues_ = 0;
+    mutable double valuesSentInAll_ = 0;
+    long stepsExchanged_ = 0;
 };
 
 }  // namespace qs

@@ -126,9 +126,11 @@ void DoublePointSolver<D>::allocate() {
     water_.resize(nc);
     sand_.resize(nc);
 
-    // Liquid points come and go: reserve for the densest filling the run can reach.
+    // Liquid points come and go: reserve for the densest filling the run can reach (over MPI
+    // ranks, in the rank's block and its window of ghost cells).
+    const Index reach = ranks_ ? ranks_->windowCells() : nc;
     const std::size_t liquidCapacity = static_cast<std::size_t>(
-        qs::liquidCapacity(config_, nc, static_cast<std::int64_t>(liquid_.size())));
+        qs::liquidCapacity(config_, reach, static_cast<std::int64_t>(liquid_.size())));
     reservePoints(liquid_, liquidCapacity, scratch_, 6);
     // the reorder's scratch holds the widest field: the stress (6), C (D x D) or the internal state
     reservePoints(solid_, solid_.size(), scratch_, std::max({6, D * D, solid_.internalCount}));

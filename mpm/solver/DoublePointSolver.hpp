@@ -152,6 +152,12 @@ public:
 
     void saveState(CheckpointData& data) const;
     void loadState(const CheckpointData& data);
+    /// The state a coupling window starts from, for implicit coupling's repeats of the window
+    /// (MpmAdapter): over MPI ranks each rank's own points, grid and sums as it holds them, with no
+    /// gather and no reduction, restored bit for bit on the rank that saved them; on one rank the
+    /// checkpoint's state.
+    void saveWindowStart(CheckpointData& data) const;
+    void loadWindowStart(const CheckpointData& data);
 
 private:
     // phases of one step

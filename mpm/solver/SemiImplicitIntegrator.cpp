@@ -108,6 +108,24 @@ void SemiImplicitIntegrator<D>::restoreState(const std::vector<double>& state) {
     gateY_ = Eigen::Map<const Eigen::VectorXd>(state.data() + nc, nc);
 }
 
+// A window's start over MPI ranks: each rank's own dp and y, window cells included (they are
+// their owners', RankShare::shareCellValues), and the AMG hierarchy built anew at the window's
+// start and at each repeat, so that every pass over the window begins from the same solver.
+template <int D>
+std::vector<double> SemiImplicitIntegrator<D>::saveWindowStart() const {
+    if (!ctx_.ranks) return saveState();
+    distributed_->rebuildPreconditioner();
+    std::vector<double> state(dp_.data(), dp_.data() + dp_.size());
+    state.insert(state.end(), gateY_.data(), gateY_.data() + gateY_.size());
+    return state;
+}
+
+template <int D>
+void SemiImplicitIntegrator<D>::restoreWindowStart(const std::vector<double>& state) {
+    restoreState(state);
+    if (ctx_.ranks) distributed_->rebuildPreconditioner();
+}
+
 template <int D>
 Real SemiImplicitIntegrator<D>::limit(Index c) const {
     return waterLimit(ctx_.filling.openToAir[c], ctx_.config.liquid.cavitationPressure);

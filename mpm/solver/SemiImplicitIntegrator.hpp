@@ -52,6 +52,8 @@ public:
     IntegratorStats stats() const override { return stats_; }
     std::vector<double> saveState() const override;
     void restoreState(const std::vector<double>& state) override;
+    std::vector<double> saveWindowStart() const override;
+    void restoreWindowStart(const std::vector<double>& state) override;
     /// Pa per cell, the last step's pressure increment dp (a held cell's: its known one)
     const Eigen::VectorXd& pressureIncrement() const { return dp_; }
 

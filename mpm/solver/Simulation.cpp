@@ -137,11 +137,11 @@ public:
           checkpointPath_(outDir_ / "checkpoint.h5"),
           windowed_(options.windowedModel || config.reservoir.kind == ReservoirKind::OpenFoam),
           ranks_(options.ranks && options.ranks->parallel() ? options.ranks : nullptr),
-          // a column beside a line on ranks is stepped whole on every rank, the line decomposed:
-          // a 1D column cannot be cut and costs little beside the line, and a cut column's
-          // implicit coupling would need a rollback of each rank's own points (its checkpoint
-          // gathers them to rank 0), which is not built yet
-          columnRanks_(ranks_ && !windowed_ ? ranks_ : nullptr),
+          // a column beside a line on ranks is cut as any other (implicit coupling repeats a
+          // window from each rank's own points: DoublePointSolver::saveWindowStart) where it can
+          // be; a 1D column, or one with too few columns for the ranks, is stepped whole on
+          // every rank beside the decomposed line (it costs little beside the line)
+          columnRanks_(ranks_ && (!windowed_ || decomposable(config, ranks_->size())) ? ranks_ : nullptr),
           root_(!ranks_ || ranks_->rank() == 0) {
         open();
     }
@@ -483,10 +483,21 @@ RunSummary RunOf<D>::finish() {
         r.coupling = windowAdvancer_->stats();
         r.couplingSummary = windowAdvancer_->summary();
     }
+    // what crosses the cuts: each rank's bytes sent a step, the busiest rank's and the mean
+    double sentMax = 0, sentMean = 0;
+    if (columnRanks_) {
+        const RankShare<D>& share = *solver.rankShare();
+        const double perStep = share.stepsExchanged() > 0 ? 8 * share.valuesSentInAll() / share.stepsExchanged() : 0.0;
+        sentMax = columnRanks_->max(perStep);
+        sentMean = columnRanks_->sum(perStep) / columnRanks_->size();
+    }
     if (options_.quiet || !root_) return r;
     std::printf("quicksand: done, %ld steps in %s (%.3g point updates/s); results in %s\n", r.steps,
                 formatSeconds(r.wallSeconds).c_str(), r.pointUpdatesPerSecond,
                 options_.writeFiles ? outDir_.string().c_str() : "(memory)");
+    if (columnRanks_)
+        std::printf("quicksand: sent to neighbouring ranks per step: %s a rank on average, %s from the busiest\n",
+                    formatBytes(sentMean).c_str(), formatBytes(sentMax).c_str());
     if (!r.couplingSummary.empty()) std::printf("quicksand: %s\n", r.couplingSummary.c_str());
     const IntegratorStats& i = r.integrator;
     if (i.steps > 0) {

@@ -314,6 +314,60 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     checkHealth();  // a state that loads must be one a step can take (a cell per step at most, ...)
 }
 
+// A window's start on a rank: the points it owns between steps (they are the rank's alone, and
+// stay in the order the rank stepped them), its whole copy of the grid's carried fields (their
+// window cells included, which a checkpoint takes from their owners), and its own parts of the
+// sums that a checkpoint adds over the ranks (the chamber's injected volume, the sand carried
+// out). Nothing here is collective but the integrator's, which every rank enters alike.
+template <int D>
+void DoublePointSolver<D>::saveWindowStart(CheckpointData& data) const {
+    if (!ranks_) return saveState(data);
+    data.putScalar("time", time_);
+    data.putScalar("steps", static_cast<double>(steps_));
+    putSet(data, "solid", solid_);
+    putSet(data, "liquid", liquid_);
+    putGridFields(data, "nodes", nodes_);
+    putGridFields(data, "cells", water_);
+    data.put("gap", const_cast<InflowChamber<D>&>(chamber_).gaps());
+    data.put("reservoir", reservoir_.saveState());
+    data.put("integrator", integrator_->saveWindowStart());
+    data.put("ledger", std::vector<double>{cumulativeInflow_, chamber_.injectedVolume(), outflowVolume_,
+                                           initialLiquidMass_, initialGapVolume_, gateFlux_, gatePressure_,
+                                           solidOutflowMass_});
+}
+
+template <int D>
+void DoublePointSolver<D>::loadWindowStart(const CheckpointData& data) {
+    if (!ranks_) return loadState(data);
+    time_ = data.scalar("time");
+    steps_ = static_cast<long>(data.scalar("steps"));
+    getSet(data, "solid", solid_, D);
+    getSet(data, "liquid", liquid_, D);
+    solid_.stressReturn.assign(solid_.size(), 0);
+    getGridFields(data, "nodes", nodes_);
+    getGridFields(data, "cells", water_);
+    chamber_.gaps() = data.doubles("gap");
+    reservoir_.restoreState(data.doubles("reservoir"));
+    integrator_->restoreWindowStart(data.doubles("integrator"));
+    const auto& l = data.doubles("ledger");
+    cumulativeInflow_ = l[0];
+    chamber_.setInjectedVolume(l[1]);
+    outflowVolume_ = l[2];
+    initialLiquidMass_ = l[3];
+    initialGapVolume_ = l[4];
+    gateFlux_ = l[5];
+    gatePressure_ = l[6];
+    solidOutflowMass_ = l[7];
+    gateLaw_ = reservoir_.gateLaw(time_);
+}
+
+template void DoublePointSolver<1>::saveWindowStart(CheckpointData&) const;
+template void DoublePointSolver<2>::saveWindowStart(CheckpointData&) const;
+template void DoublePointSolver<3>::saveWindowStart(CheckpointData&) const;
+template void DoublePointSolver<1>::loadWindowStart(const CheckpointData&);
+template void DoublePointSolver<2>::loadWindowStart(const CheckpointData&);
+template void DoublePointSolver<3>::loadWindowStart(const CheckpointData&);
+
 template void DoublePointSolver<1>::saveState(CheckpointData&) const;
 template void DoublePointSolver<2>::saveState(CheckpointData&) const;
 template void DoublePointSolver<3>::saveState(CheckpointData&) const;

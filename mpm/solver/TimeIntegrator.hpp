@@ -91,6 +91,11 @@ public:
     virtual std::vector<double> saveState() const { return {}; }
     /// Throws qs::Error if `state` is not one this scheme wrote for this grid.
     virtual void restoreState(const std::vector<double>& state) { (void)state; }
+    /// The same state as this rank holds it, for implicit coupling's repeat of a window over MPI
+    /// ranks (DoublePointSolver::saveWindowStart): no reduction, each rank its own copy. On one
+    /// rank it is saveState's.
+    virtual std::vector<double> saveWindowStart() const { return saveState(); }
+    virtual void restoreWindowStart(const std::vector<double>& state) { restoreState(state); }
 };
 
 template <int D>

@@ -10,7 +10,7 @@ its OpenFOAM tube (a wedge, 5 x 10 cells), run to 0.05 s:
     faces on one rank, the reservoir's on another), each rank its processorN/: the gate's flux and
     pressure and the column's series within the line's solver tolerance of the one-rank run
     (tolerance 1e-6 of each quantity's scale; guard 1e-7, achieved about 1e-8); the same with a
-    2D column (stepped whole on each rank);
+    2D column, cut over the ranks as the line is (implicit coupling's rollback on each rank);
  3. reconstructPar on output/openfoam/ gives the serial run's time folders, with its pressure
     field within 1e-6 m2/s2 (the p solver's tolerance is 1e-6 absolute);
  4. checkpoints across rank counts: 1 then 2 ranks, and 2 then 1, against 1 then 1 (the same
@@ -136,15 +136,25 @@ for ranks, split in ((2, "2 1 1"), (3, "3 1 1")):
             fail(f"the line on {ranks} ranks wrote no output/openfoam/processor{r}/0.05")
     compare(f"decomposed over {ranks} ranks against one", serial, case)
 
-# 2b. a 2D column beside the decomposed line: stepped whole on every rank (a cut column's
-# implicit coupling would need a rollback of each rank's own points), against one rank
-PLANE = ["--set", "grid.dimension=2", "--set", "grid.width=0.0372"]
+# 2b. a 2D column beside the decomposed line, cut over the ranks too (12 columns: a block and its
+# window of ghost points do not cover the grid), against one rank: implicit coupling repeats each
+# window from every rank's own points (DoublePointSolver::saveWindowStart)
+PLANE = ["--set", "grid.dimension=2", "--set", "grid.width=0.1116"]
 plane1, plane2 = make_case("plane1"), make_case("plane2", 2, "2 1 1")
 run(plane1, extra=PLANE)
+c = subprocess.run([*mpiexec, "-np", "2", quicksand, "check", plane2, *PLANE], capture_output=True, text=True,
+                   timeout=120)
+if c.returncode != 0 or "decomposition: 2 ranks, 2 x 1 blocks" not in c.stdout or "line is decomposed" not in c.stdout:
+    fail("check of a 2D column beside a line on 2 ranks did not show the column's blocks and the line's "
+         "decomposition:\n" + c.stdout[-2000:] + c.stderr[-2000:])
 p = run(plane2, ranks=2, extra=PLANE)
-if "the column is stepped whole on each" not in p.stdout:
-    fail("a 2D column beside a line on 2 ranks did not say it is stepped whole on each:\n" + p.stdout)
-compare("a 2D column, the line decomposed over 2 ranks, against one", plane1, plane2)
+if "blocks of whole columns" not in p.stdout or "stepped whole" in p.stdout:
+    fail("a 2D column beside a line on 2 ranks was not cut over them:\n" + p.stdout)
+m = re.search(r"coupling: (\d+) windows, (\d+) model solves", p.stdout)
+if not m or int(m.group(2)) <= int(m.group(1)):
+    fail("the 2D column's implicit coupling repeated no window (as many model solves as windows): the rollback "
+         "was not exercised:\n" + p.stdout[-1500:])
+compare("a 2D column cut over 2 ranks, the line decomposed over them, against one rank", plane1, plane2)
 
 # 3. reconstructPar gives the serial run's folders and fields
 decomposed = os.path.join(work, "decomposed2")

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "io/CaseLoader.hpp"
+#include "io/Checkpoint.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/GatherPoints.hpp"
 #include "reservoir/ReservoirModel.hpp"
@@ -202,7 +203,9 @@ void compareWithOneRank(const CaseConfig& config, int steps = kSteps, bool until
     // the semi-implicit step's active set (cells held at their bound), as the ranks agreed on it
     const IntegratorStats sa = one->solver->integratorStats(), sb = many.solver->integratorStats();
     EXPECT_EQ(sa.solves, sb.solves) << "the active set's passes";
-    if (config.reservoir.head > 4) EXPECT_GT(sa.solves, sa.steps) << "the surge must engage the active set";
+    if (config.reservoir.head > 4) {
+        EXPECT_GT(sa.solves, sa.steps) << "the surge must engage the active set";
+    }
     if (sa.steps > 0)
         std::printf("semi-implicit: %ld solves in %ld steps on one rank, %ld on %d ranks\n", sa.solves, sa.steps,
                     sb.solves, world.size());
@@ -293,5 +296,92 @@ TEST(ColumnOnRanks, TheSameRanksGiveTheSameBytesWithTheSemiImplicitScheme) {
 }
 
 TEST(ColumnOnRanks, TheSameRanksGiveTheSameBytes) { expectTheSameBytesTwice(TimeScheme::Explicit); }
+
+/// `quicksand check --ranks N` estimates each rank's ghost points (Decomposition.hpp) from the
+/// case's layout: against the points the run lays out, counted in each rank's window beyond its
+/// block, within 5 % (the estimate spreads a row's points evenly over its columns: a bed whose
+/// columns differ would be off by as much; the random bed's lattice is uniform, and the two agree
+/// to round-off).
+TEST(ColumnOnRanks, CheckEstimatesTheGhostPointsOfTheRun) {
+    const Communicator& world = Communicator::world();
+    const CaseConfig config = randomBed({"grid.width=0.1488"});
+    Column<2> column(config, &world);
+    const SolidPoints<2> solid = gatherPoints(column.solver->solid(), world);
+    const LiquidPoints<2> liquid = gatherPoints(column.solver->liquid(), world);
+    if (world.rank() != 0) return;
+    const Decomposition& d = column.solver->rankShare()->decomposition();
+    const Real h = config.grid.cellSize;
+    const Index layers = ghostPointLayers(config);
+    for (int r = 0; r < d.ranks; ++r) {
+        const DecompositionBlock& b = d.blocks[static_cast<std::size_t>(r)];
+        auto ghosts = [&](const auto& set) {
+            double n = 0;
+            for (std::size_t p = 0; p < set.size(); ++p) {
+                const Index k = std::min<Index>(static_cast<Index>(set.x[p * 2] / h), b.cellEnd[0] + layers);
+                const bool inWindow = k >= b.cellBegin[0] - layers && k < b.cellEnd[0] + layers;
+                const bool inBlock = k >= b.cellBegin[0] && k < b.cellEnd[0];
+                n += inWindow && !inBlock;
+            }
+            return n;
+        };
+        const double counted = ghosts(solid) + ghosts(liquid);
+        EXPECT_GT(counted, 0) << "rank " << r;
+        EXPECT_NEAR(b.ghostPoints, counted, 0.05 * counted) << "rank " << r << ": estimated against counted";
+        // the guard: on the bed's lattice the two agree to round-off (2, 3 and 4 ranks)
+        EXPECT_NEAR(b.ghostPoints, counted, 1e-6 * counted) << "rank " << r << ": estimated against counted";
+    }
+}
+
+/// Every entry of a window's start the same, bit for bit (values, integer codes, or scalars).
+void expectTheSameEntries(const CheckpointData& a, const CheckpointData& b, const char* what) {
+    ASSERT_EQ(a.names(), b.names()) << what;
+    for (const std::string& name : a.names()) {
+        try {
+            EXPECT_TRUE(a.doubles(name) == b.doubles(name)) << what << ": entry " << name;
+            continue;
+        } catch (const Error&) {
+        }
+        try {
+            EXPECT_TRUE(a.integers(name) == b.integers(name)) << what << ": entry " << name;
+            continue;
+        } catch (const Error&) {
+        }
+        EXPECT_EQ(a.scalar(name), b.scalar(name)) << what << ": entry " << name;
+    }
+}
+
+/// Implicit coupling's repeat of a window over MPI ranks (coupling/CouplingScheme.hpp,
+/// DoublePointSolver::saveWindowStart): each rank saves its own points, grid and sums, steps
+/// the window, loads them back and steps it again. The load restores every entry on every rank
+/// bit for bit (a 2D column beside an OpenFOAM line is cut over the ranks on that promise), and
+/// the repeat takes the same steps: the same bytes at the window's end, ghost exchanges and all.
+void expectAWindowRepeatedBitForBit(TimeScheme scheme) {
+    const Communicator& world = Communicator::world();
+    Column<2> column(randomBed({"grid.width=0.1488"}, scheme), &world);
+    for (int k = 0; k < 20; ++k) column.solver->step();
+    CheckpointData start;
+    column.solver->saveWindowStart(start);
+    auto window = [&] {
+        for (int k = 0; k < 40; ++k) column.solver->step();
+        CheckpointData end;
+        column.solver->saveWindowStart(end);
+        return end;
+    };
+    const CheckpointData first = window();
+    column.solver->loadWindowStart(start);
+    CheckpointData restored;
+    column.solver->saveWindowStart(restored);
+    expectTheSameEntries(start, restored, "the window's start, loaded back");
+    const CheckpointData second = window();
+    expectTheSameEntries(first, second, "the window's end, stepped twice from the same start");
+}
+
+TEST(ColumnOnRanks, AWindowRepeatsBitForBitFromEachRanksOwnStart) {
+    expectAWindowRepeatedBitForBit(TimeScheme::Explicit);
+}
+
+TEST(ColumnOnRanks, AWindowRepeatsBitForBitFromEachRanksOwnStartWithTheSemiImplicitScheme) {
+    expectAWindowRepeatedBitForBit(TimeScheme::SemiImplicit);
+}
 
 }  // namespace
