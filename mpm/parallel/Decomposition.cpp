@@ -220,7 +220,7 @@ Decomposition decomposeAs(const CaseConfig& config, const std::array<int, 3>& pa
 }
 
 int ghostPointLayers(const CaseConfig& config) {
-    return config.grid.shapeFunctions == ShapeFunctionKind::Gimp ? 4 : 3;
+    return config.grid.shapeFunctions == ShapeFunctionKind::Gimp ? 4 : 2;
 }
 
 bool decomposable(const CaseConfig& config, int ranks) {

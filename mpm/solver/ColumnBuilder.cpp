@@ -78,7 +78,8 @@ int freeWaterPointsPerCell(const CaseConfig& config) {
 template <int D>
 void buildColumn(const CaseConfig& config, const Grid<D>& grid,
                  const std::vector<SolidMaterial>& materials, SolidPoints<D>& solid,
-                 LiquidPoints<D>& liquid) {
+                 LiquidPoints<D>& liquid, const std::function<bool(const Real* x)>& keep) {
+    auto made = [&](const Vec<D>& x) { return !keep || keep(&x[0]); };
     const Real h = grid.h();
     const Real g = config.gravity;
     const Real rhoL = config.liquid.density;
@@ -165,6 +166,7 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
             chamberExcess = local(base).excess;  // the material at x = 0 sets the chamber's
         }
         forEachLatticePoint(grid, spc, zb, zt, cells * spc, [&](const Vec<D>& x, Real V) {
+            if (!made(x)) return;
             const Local at = local(x);
             const MaterialConfig& mc = *at.mc;
             Real stress[6] = {0, 0, 0, 0, 0, 0};
@@ -188,6 +190,7 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
                         fluidised ? kFluidisedState : kSolidState);
         });
         forEachLatticePoint(grid, lpc, zb, zt, cells * lpc, [&](const Vec<D>& x, Real V) {
+            if (!made(x)) return;
             const Local at = local(x);
             const MaterialConfig& mc = *at.mc;
             const Real n = porosityAt(mc, x);
@@ -213,6 +216,7 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
         const Index nz = std::llround((z1 - z0) / h * nzFree);
         if (nz <= 0) return;
         forEachLatticePoint(grid, lpc, z0, z1, nz, [&](const Vec<D>& x, Real V) {
+            if (!made(x)) return;
             appendLiquid(liquid, x, V, rhoL * V, hydrostatic(x[D - 1]) + excess, q0);
         });
     };
@@ -221,10 +225,10 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
 }
 
 template void buildColumn<1>(const CaseConfig&, const Grid<1>&, const std::vector<SolidMaterial>&,
-                             SolidPoints<1>&, LiquidPoints<1>&);
+                             SolidPoints<1>&, LiquidPoints<1>&, const std::function<bool(const Real*)>&);
 template void buildColumn<2>(const CaseConfig&, const Grid<2>&, const std::vector<SolidMaterial>&,
-                             SolidPoints<2>&, LiquidPoints<2>&);
+                             SolidPoints<2>&, LiquidPoints<2>&, const std::function<bool(const Real*)>&);
 template void buildColumn<3>(const CaseConfig&, const Grid<3>&, const std::vector<SolidMaterial>&,
-                             SolidPoints<3>&, LiquidPoints<3>&);
+                             SolidPoints<3>&, LiquidPoints<3>&, const std::function<bool(const Real*)>&);
 
 }  // namespace qs

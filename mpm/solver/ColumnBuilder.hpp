@@ -7,6 +7,7 @@
 //    (chamber, water above the sand) smaller points of V = n_min V_cell / liquid_per_cell^D along
 //    the vertical, so that water entering the sand does not leave sand cells empty;
 //  - hydrostatic pore pressure below the initial water level.
+#include <functional>
 #include <vector>
 
 #include "grid/Grid.hpp"
@@ -18,10 +19,13 @@ namespace qs {
 
 struct SolidMaterial;
 
+/// `keep`, when given, says which points to make (by position): over MPI ranks a rank makes
+/// only its block's, in the order one rank makes them (a random field's porosity, its costliest
+/// part, is not evaluated for the others' points).
 template <int D>
 void buildColumn(const CaseConfig& config, const Grid<D>& grid,
                  const std::vector<SolidMaterial>& materials, SolidPoints<D>& solid,
-                 LiquidPoints<D>& liquid);
+                 LiquidPoints<D>& liquid, const std::function<bool(const Real* x)>& keep = {});
 
 /// Vertical count of free-water liquid points per cell: ceil(liquid_per_cell / n_min).
 int freeWaterPointsPerCell(const CaseConfig& config);

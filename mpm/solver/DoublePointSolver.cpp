@@ -58,16 +58,17 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
     dt_ = timeStep(config);
 
     for (const auto& m : materials_) solid_.internalCount = std::max(solid_.internalCount, m.model->stateCount());
-    buildColumn(config, grid_, materials_, solid_, liquid_);
     if (ranks && ranks->parallel()) {
-        // every rank builds the column alike and keeps its block's points
+        // each rank makes its block's points of the column, as one rank makes them
         QS_CHECK(config.time.scheme == TimeScheme::Explicit || distributedSolverAvailable(),
                  config.caseDirectory << "/case.toml: time.scheme = \"semi_implicit\" on MPI ranks needs the pressure "
                                       "solve over the ranks (hypre, Debian's libhypre-dev: bash tools/setup.sh --mpi), "
                                       "which this build lacks; run it on one rank, or with time.scheme = \"explicit\"");
         ranks_ = std::make_unique<RankShare<D>>(*ranks, decompose(config, ranks->size()), grid_, ghostPointLayers(config));
-        ranks_->keepOwned(solid_);
-        ranks_->keepOwned(liquid_);
+        buildColumn(config, grid_, materials_, solid_, liquid_,
+                    [&](const Real* x) { return ranks_->ownsCell(grid_.cellOf(x)); });
+    } else {
+        buildColumn(config, grid_, materials_, solid_, liquid_);
     }
     allocate();
     masks_.build(grid_, config);

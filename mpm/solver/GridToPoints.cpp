@@ -171,10 +171,17 @@ void DoublePointSolver<D>::gridToPoints() {
         if (noSkeleton)
             for (int k = 0; k < 6; ++k) s[k] = 0;
     };
+    // Over MPI ranks a ghost sand point (one another rank owns: its cell at the step's start is
+    // not this rank's) is not updated: nothing reads it after this phase before the ghosts are
+    // dropped (the pressure is the nodes', the chamber and the weir read the water), and its owner
+    // updates it. The ghost water moves, for the chamber's injection.
     const Index solidCount = static_cast<Index>(solid_.size());
+    const std::vector<Index>& startCell = solid_.shape.cell;
     withStencilKind(!gimp, [&](auto linearShapes) {
-        if (nodes_.anyDiffusion) forAll(solidCount, [&](Index p) { solidPoint(p, std::true_type{}, linearShapes); });
-        else forAll(solidCount, [&](Index p) { solidPoint(p, std::false_type{}, linearShapes); });
+        if (nodes_.anyDiffusion)
+            forAll(solidCount, [&](Index p) { if (ownsCell(startCell[p])) solidPoint(p, std::true_type{}, linearShapes); });
+        else
+            forAll(solidCount, [&](Index p) { if (ownsCell(startCell[p])) solidPoint(p, std::false_type{}, linearShapes); });
     });
 
     // The liquid's update, with the front diffusion's sums only on steps that have any (most
