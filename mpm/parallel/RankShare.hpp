@@ -76,6 +76,7 @@ public:
         for (Index col = 0; col < grid.columns(); ++col) columnOwned_.push_back(ownsCell(grid.columnCell(col, 0)));
         listCarried(grid, d);
         send_.resize(neighbours_.size());
+        sendIndex_.resize(neighbours_.size());
         recv_.resize(neighbours_.size());
         countsOut_.assign(neighbours_.size(), std::vector<double>(1));
         countsIn_.assign(neighbours_.size(), std::vector<double>(1));
@@ -122,19 +123,19 @@ public:
     void exchange(Set& set) {
         const std::size_t n = set.size(), width = packedWidth(set);
         drop_.assign(n, 0);
-        for (auto& s : send_) s.clear();
+        for (auto& s : sendIndex_) s.clear();
         sent_ = 0;
         std::size_t firstDropped = n;
         for (std::size_t p = 0; p < n; ++p) {
             const Index c = cellOf(&set.x[p * D]);
             destinationsOf(c, to_);
-            for (int k : to_) {
-                packPoint(set, p, send_[static_cast<std::size_t>(k)]);
-                ++sent_;
-            }
+            for (int k : to_) sendIndex_[static_cast<std::size_t>(k)].push_back(static_cast<Index>(p));
+            sent_ += to_.size();
             drop_[p] = !inMyWindow_[c];
             if (drop_[p] && firstDropped == n) firstDropped = p;
         }
+        // field by field: each field's values of a neighbour's points in one sweep
+        for (std::size_t k = 0; k < neighbours_.size(); ++k) packPointsByField(set, sendIndex_[k], send_[k]);
         sentValues_ = 0;
         for (std::size_t k = 0; k < neighbours_.size(); ++k) {
             countsOut_[k][0] = double(send_[k].size() / width);
@@ -147,7 +148,7 @@ public:
         comm_.exchange(neighbours_, send_, recv_);
         // few points leave the window in a step: the set is rewritten from the first one only
         if (firstDropped < n) compactPoints(set, drop_, firstDropped);
-        for (std::size_t k = 0; k < neighbours_.size(); ++k) unpackPoints(set, recv_[k], width);
+        for (std::size_t k = 0; k < neighbours_.size(); ++k) unpackPointsByField(set, recv_[k], width);
     }
 
     /// The grid's carried state (the last step's fields that this step reads: the cells' pressure
@@ -323,6 +324,7 @@ private:
     std::vector<std::vector<Index>> cellsOut_, cellsIn_, nodesOut_, nodesIn_;
     std::vector<std::vector<double>> carriedOut_, carriedIn_;
     std::vector<int> neighbours_;
+    std::vector<std::vector<Index>> sendIndex_;  ///< per neighbour, the points the exchange sends it
     std::vector<std::vector<double>> send_, recv_, countsOut_, countsIn_;
     std::vector<char> drop_;
     std::size_t sent_ = 0, sentValues_ = 0;
