@@ -18,6 +18,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
+/// s a rank whose part of a decomposed line failed to open waits for the others' answer before
+/// it ends the run (they may be held in OpenFOAM's reductions). A longer opening on the other
+/// ranks (a large mesh) only turns the agreed error into this rank's own, with the run ended.
+constexpr double kOpeningAnswer = 20;
+
 using CreateTube = Tube* (*)(const TubeSettings*, char*, int);
 CreateTube createTube = nullptr;
 
@@ -232,9 +237,10 @@ void FoamReservoir::startTube(double startTime) {
     s.parallel = decomposed_;
     char error[8192] = "";
     std::unique_ptr<Tube> tube;
-    // every rank opens its part, and agrees (a rank that failed alone would leave the others
-    // waiting in OpenFOAM's next reduction)
-    agreeOnErrors(ranks_, [&] {
+    // every rank opens its part, and agrees; a rank that failed alone (a processor folder of its
+    // own edited by hand, damaged) may leave the others waiting in one of OpenFOAM's reductions
+    // as it reads the mesh and fields, and ends the run if they do not answer within kOpeningAnswer
+    agreeOnErrorsWithin(ranks_, kOpeningAnswer, [&] {
         if (!solves) return;
         tube.reset(createTube(&s, error, sizeof error));
         // OpenFOAM names the run's working copy; the user knows their own case
@@ -244,8 +250,16 @@ void FoamReservoir::startTube(double startTime) {
 }
 
 std::string FoamReservoir::userPaths(std::string text) const {
+    // a processor folder is the working copy's alone (decomposePar's): its path stays
     const std::string user = fs::absolute(caseName_).lexically_normal().string();
-    for (std::size_t at; (at = text.find(workDir_)) != std::string::npos;) text.replace(at, workDir_.size(), user);
+    for (std::size_t at = 0; (at = text.find(workDir_, at)) != std::string::npos;) {
+        if (text.compare(at + workDir_.size(), 10, "/processor") == 0) {
+            at += workDir_.size();
+            continue;
+        }
+        text.replace(at, workDir_.size(), user);
+        at += user.size();
+    }
     return text;
 }
 

@@ -9,6 +9,7 @@
 // same order, so a stage is entered only once the stage before it has been agreed. Stages may
 // nest (an inner stage's SharedError is the outer's error, alike on every rank).
 #include <exception>
+#include <iostream>
 #include <string>
 #include <vector>
 
@@ -32,6 +33,36 @@ void agreeOnErrors(const Communicator* ranks, F&& f) {
         failure = std::string("internal error: ") + e.what();
     }
     const std::vector<double> failed = ranks->allGather(failure.empty() ? 0.0 : 1.0);
+    for (int r = 0; r < static_cast<int>(failed.size()); ++r)
+        if (failed[r] != 0) throw SharedError(ranks->broadcast(failure, r));
+}
+
+/// agreeOnErrors for a stage whose own work is collective: OpenFOAM opening its part of a
+/// decomposed case reads the mesh and fields with reductions over the ranks. A rank that fails
+/// in it may leave the others waiting in one of those, where no agreement reaches them. So the
+/// agreement waits at most `seconds`: a failing rank that has not heard from every rank by then
+/// says its error, naming itself, once, and ends the run on every rank (Communicator::abort, exit
+/// 1); a rank that succeeded waits as long as the stage takes. Where all arrive in time it is
+/// agreeOnErrors.
+template <class F>
+void agreeOnErrorsWithin(const Communicator* ranks, double seconds, F&& f) {
+    if (!ranks || !ranks->parallel()) return f();
+    std::string failure;
+    try {
+        f();
+    } catch (const Error& e) {
+        failure = e.what();
+    } catch (const std::exception& e) {
+        failure = std::string("internal error: ") + e.what();
+    }
+    std::vector<double> failed;
+    const bool heard = ranks->allGatherWithin(failure.empty() ? 0.0 : 1.0, failure.empty() ? 1e300 : seconds, failed);
+    if (!heard) {
+        std::cerr << "error: rank " << ranks->rank() << " of " << ranks->size() << ": " << failure
+                  << "\n(the other ranks did not answer within " << seconds
+                  << " s, held in OpenFOAM's own communication: the run is ended on every rank)" << std::endl;
+        ranks->abort(1);
+    }
     for (int r = 0; r < static_cast<int>(failed.size()); ++r)
         if (failed[r] != 0) throw SharedError(ranks->broadcast(failure, r));
 }

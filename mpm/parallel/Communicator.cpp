@@ -1,5 +1,8 @@
 #include "parallel/Communicator.hpp"
 
+#include <chrono>
+#include <thread>
+
 #include <algorithm>
 #include <cstdlib>
 #include <numeric>
@@ -125,6 +128,27 @@ void countsAndOffsets(int size, int count, std::vector<int>& counts, std::vector
 }
 }  // namespace
 
+bool Communicator::allGatherWithin(double local, double seconds, std::vector<double>& all) const {
+    all.assign(static_cast<std::size_t>(size_), local);
+    if (size_ == 1) return true;
+    static double sent;  // the request outlives a call that gives up on it: its buffers must too
+    static std::vector<double> received;
+    sent = local;
+    received.assign(static_cast<std::size_t>(size_), 0.0);
+    MPI_Request request;
+    MPI_Iallgather(&sent, 1, MPI_DOUBLE, received.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD, &request);
+    const auto start = std::chrono::steady_clock::now();
+    for (int done = 0;;) {
+        MPI_Test(&request, &done, MPI_STATUS_IGNORE);
+        if (done) break;
+        if (std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count() > seconds)
+            return false;  // the run is ended by the caller
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    all = received;
+    return true;
+}
+
 std::vector<double> Communicator::allGatherv(const std::vector<double>& local) const {
     if (size_ == 1) return local;
     std::vector<int> counts, offsets;
@@ -208,6 +232,10 @@ bool launchedByMpi() { return false; }
 MpiSession::MpiSession(int&, char**&) {}
 MpiSession::~MpiSession() = default;
 std::vector<double> Communicator::allGather(double local) const { return {local}; }
+bool Communicator::allGatherWithin(double local, double, std::vector<double>& all) const {
+    all = {local};
+    return true;
+}
 std::vector<double> Communicator::allGatherv(const std::vector<double>& local) const { return local; }
 std::vector<double> Communicator::gatherv(const std::vector<double>& local, int) const { return local; }
 void Communicator::maxInPlace(std::vector<double>&) const {}

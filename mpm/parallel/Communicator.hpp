@@ -44,6 +44,10 @@ public:
     void minInPlace(std::vector<double>& values) const;
     /// Every rank's value, in rank order, on every rank.
     std::vector<double> allGather(double local) const;
+    /// As allGather, waiting at most `seconds` for the others (a non-blocking gather, polled):
+    /// false if they have not all arrived by then (they may be held in a collective of someone
+    /// else's, OpenFOAM's), `all` then undefined. Every rank must call it alike.
+    bool allGatherWithin(double local, double seconds, std::vector<double>& all) const;
     /// Every rank's values, of any length, concatenated in rank order, on every rank.
     std::vector<double> allGatherv(const std::vector<double>& local) const;
     /// The same on rank `root` only (empty elsewhere): what rank 0 writes for all of them.

@@ -17,7 +17,9 @@ its OpenFOAM tube (a wedge, 5 x 10 cells), run to 0.05 s:
     stop at 0.05 s, so the same coupling windows), at the tolerance of 2;
  5. hostile: numberOfSubdomains 3 on 2 ranks, and a decomposeParDict whose simple split does not
     make numberOfSubdomains parts, are refused once each with exit 1, naming the file, within
-    the timeout, the earlier output/ untouched.
+    the timeout, the earlier output/ untouched;
+ 6. hostile: rank 1's processor folder damaged before a resume ends the run (no hang), naming
+    the rank, the checkpoint intact.
 
 usage: mpi_openfoam_line.py QUICKSAND "MPIEXEC ..." SOURCE_DIR WORK_DIR
 """
@@ -28,6 +30,7 @@ import shlex
 import shutil
 import subprocess
 import sys
+import time
 
 quicksand, mpiexec, source, work = sys.argv[1], shlex.split(sys.argv[2]), sys.argv[3], sys.argv[4]
 TOLERANCE, GUARD = 1e-6, 1e-7
@@ -60,7 +63,7 @@ def run(case, ranks=1, end=0.05, resume=False, expect=0, extra=()):
     if resume:
         cmd.append("--resume")
     p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
-    if p.returncode != expect:
+    if expect is not None and p.returncode != expect:
         fail(f"{' '.join(cmd)}: exit {p.returncode}, expected {expect}:\n{p.stdout[-2000:]}\n{p.stderr[-3000:]}")
     return p
 
@@ -209,6 +212,42 @@ for name, parts, split, said in (
         fail(f"{name}: the error was said {count} times, expected once:\n{p.stderr[-3000:]}")
     if open(os.path.join(case, "output/series.csv")).read() != "earlier results\n":
         fail(f"{name}: a refused run touched the earlier output/")
+
+# 6. hostile: one rank's processor folder damaged by hand between a run and its resume. That rank
+# fails to open its part while the other reads its own, waiting in OpenFOAM's exchanges with it:
+# the failing rank says why (naming itself) and ends the run within its wait (20 s), exit non-zero,
+# the checkpoint as it was
+damaged = make_case("damaged", 2, "2 1 1")
+run(damaged, ranks=2, end=0.05)
+with open(os.path.join(damaged, "output/openfoam/processor1/0.05/p"), "w") as f:
+    f.write("FoamFile { version 2.0; format ascii; class volScalarField; object p; }\ninternalField garbage (\n")
+checkpoint = open(os.path.join(damaged, "output/checkpoint.h5"), "rb").read()
+start = time.monotonic()
+try:
+    p = run(damaged, ranks=2, end=0.1, resume=True, expect=None)
+    took = time.monotonic() - start
+    print(f"a damaged processor folder on rank 1: exit {p.returncode} after {took:.1f} s", flush=True)
+    if p.returncode == 0:
+        fail("a resume with rank 1's processor folder damaged ran on:\n" + p.stdout[-1500:])
+    if "rank 1" not in p.stderr or "output/openfoam/processor1/0.05/p" not in p.stderr:
+        fail("a damaged processor folder on rank 1: the error does not name the rank and the damaged file:\n"
+             + p.stderr[-3000:])
+    if p.stderr.count("ill defined") != 1:
+        fail("a damaged processor folder on rank 1: OpenFOAM's reason not said once:\n" + p.stderr[-3000:])
+    if open(os.path.join(damaged, "output/checkpoint.h5"), "rb").read() != checkpoint:
+        fail("a damaged processor folder on rank 1: the checkpoint changed")
+except subprocess.TimeoutExpired:
+    fail("a damaged processor folder on rank 1: the run hung (no end within 300 s)")
+# both ranks' folders damaged alike: they fail alike and agree at once, the error said once
+with open(os.path.join(damaged, "output/openfoam/processor0/0.05/p"), "w") as f:
+    f.write("FoamFile { version 2.0; format ascii; class volScalarField; object p; }\ninternalField garbage (\n")
+start = time.monotonic()
+p = run(damaged, ranks=2, end=0.1, resume=True, expect=1)
+took = time.monotonic() - start
+print(f"both processor folders damaged: exit {p.returncode} after {took:.1f} s", flush=True)
+if p.stderr.count("ill defined") != 1 or took > 15:
+    fail(f"both processor folders damaged: the error said {p.stderr.count('ill defined')} times after {took:.1f} s, "
+         "expected once, agreed at once:\n" + p.stderr[-3000:])
 
 if failures:
     sys.exit(f"{len(failures)} failures")
