@@ -8,7 +8,10 @@ checkpoint whole, so the run resumes from it.
  2. an error on rank 0 alone inside the run: the step files' folder (output/fields/) removed
     under a running 2-rank run, so that rank 0, which alone writes the fields, cannot write the
     next output. Rank 0 says so, naming itself, and MPI_Abort ends the other rank, which would
-    otherwise wait for rank 0 in the next step's reduction; the checkpoint resumes.
+    otherwise wait for rank 0 in the next step's reduction; the checkpoint resumes;
+ 3. SIGTERM to one rank: both stop at the same step, the checkpoint written there (no periodic
+    one), the interruption said once, mpirun exits 143, the checkpoint resumes;
+ 4. SIGTERM to mpirun, which forwards it: the same, mpirun exiting non-zero (1: its own status).
 
 The column is the piping tests' random bed, 24 columns wide (cut into 2 blocks of 12).
 
@@ -135,6 +138,40 @@ else:
     elif said != 1:
         fail(f"rank0_error: rank 0's error was said {said} times, expected once:\n{err[-3000:]}")
     resumes(case, "rank0_error")
+
+# 3 and 4. SIGTERM to one rank, and to mpirun (which forwards it to the ranks): every rank stops at
+# the same step, the checkpoint is written there (the periodic ones are off), the message
+# is said once, and the run resumes. mpirun exits 143 when a rank alone was signalled (the ranks'
+# status), and non-zero when it was signalled itself (Open MPI 4.1: 1, its own status then).
+def interrupted(name, signal_mpirun):
+    case = make_case(name)
+    run = start(case, "--set", "output.fields=false", "--set", "time.checkpoint_interval=1000")
+    series = os.path.join(case, "output/series.csv")
+    if not wait_for(series, run):
+        fail(f"{name}: no output before the run ended: " + (run.communicate()[1] or "")[-2000:])
+        return
+    time.sleep(1.0)
+    ranks = ranks_of(run)
+    if len(ranks) != 2:
+        fail(f"{name}: mpirun's children are {ranks}, expected two ranks")
+        os.killpg(run.pid, signal.SIGKILL)
+        return
+    os.kill(run.pid if signal_mpirun else ranks[1], signal.SIGTERM)
+    rc, out, err = finish(run, name)
+    said = err.count("interrupted by SIGTERM")
+    print(f"{name}: mpirun exited {rc}, the interruption said {said} times", flush=True)
+    if rc == 0 or (not signal_mpirun and rc != 143):
+        fail(f"{name}: mpirun exited {rc}, expected {'non-zero' if signal_mpirun else 143}:\n{err[-2000:]}")
+    if said != 1:
+        fail(f"{name}: the interruption was said {said} times, expected once:\n{err[-3000:]}")
+    if not os.path.exists(os.path.join(case, "output/checkpoint.h5")):
+        fail(f"{name}: no checkpoint written at the interruption (the interval was 1000 s)")
+        return
+    resumes(case, name)
+
+
+interrupted("sigterm_rank", False)
+interrupted("sigterm_mpirun", True)
 
 if failures:
     sys.exit(f"{len(failures)} failures")
