@@ -3,6 +3,7 @@
 #include <dlfcn.h>
 #include <sys/wait.h>
 
+#include <cmath>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
@@ -19,9 +20,18 @@ namespace fs = std::filesystem;
 namespace {
 
 /// s a rank whose part of a decomposed line failed to open waits for the others' answer before
-/// it ends the run (they may be held in OpenFOAM's reductions). A longer opening on the other
-/// ranks (a large mesh) only turns the agreed error into this rank's own, with the run ended.
-constexpr double kOpeningAnswer = 20;
+/// it ends the run (they may be held in OpenFOAM's reductions): 20, or the environment's
+/// QUICKSAND_OPENING_WAIT. A longer opening on the other ranks (a large mesh) only turns the
+/// agreed error into this rank's own, with the run ended.
+double openingWait() {
+    const char* text = std::getenv("QUICKSAND_OPENING_WAIT");
+    if (!text || !*text) return 20;
+    char* end = nullptr;
+    const double s = std::strtod(text, &end);
+    QS_CHECK(end && *end == '\0' && s > 0 && std::isfinite(s),
+             "environment variable QUICKSAND_OPENING_WAIT is '" << text << "', expected seconds > 0 (default 20)");
+    return s;
+}
 
 using CreateTube = Tube* (*)(const TubeSettings*, char*, int);
 CreateTube createTube = nullptr;
@@ -239,8 +249,10 @@ void FoamReservoir::startTube(double startTime) {
     std::unique_ptr<Tube> tube;
     // every rank opens its part, and agrees; a rank that failed alone (a processor folder of its
     // own edited by hand, damaged) may leave the others waiting in one of OpenFOAM's reductions
-    // as it reads the mesh and fields, and ends the run if they do not answer within kOpeningAnswer
-    agreeOnErrorsWithin(ranks_, kOpeningAnswer, [&] {
+    // as it reads the mesh and fields, and ends the run if they do not answer within openingWait()
+    double wait = 20;
+    agreeOnErrors(ranks_, [&] { wait = openingWait(); });
+    agreeOnErrorsWithin(ranks_, wait, [&] {
         if (!solves) return;
         tube.reset(createTube(&s, error, sizeof error));
         // OpenFOAM names the run's working copy; the user knows their own case

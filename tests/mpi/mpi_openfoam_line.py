@@ -57,12 +57,12 @@ def make_case(name, parts=None, split=None):
     return case
 
 
-def run(case, ranks=1, end=0.05, resume=False, expect=0, extra=()):
+def run(case, ranks=1, end=0.05, resume=False, expect=0, extra=(), env=None):
     cmd = (([*mpiexec, "-np", str(ranks)] if ranks > 1 else []) + [quicksand, "run", case, "--set", f"time.end={end}"]
            + list(extra))
     if resume:
         cmd.append("--resume")
-    p = subprocess.run(cmd, capture_output=True, text=True, timeout=300)
+    p = subprocess.run(cmd, capture_output=True, text=True, timeout=300, env=dict(os.environ, **(env or {})))
     if expect is not None and p.returncode != expect:
         fail(f"{' '.join(cmd)}: exit {p.returncode}, expected {expect}:\n{p.stdout[-2000:]}\n{p.stderr[-3000:]}")
     return p
@@ -215,7 +215,8 @@ for name, parts, split, said in (
 
 # 6. hostile: one rank's processor folder damaged by hand between a run and its resume. That rank
 # fails to open its part while the other reads its own, waiting in OpenFOAM's exchanges with it:
-# the failing rank says why (naming itself) and ends the run within its wait (20 s), exit non-zero,
+# the failing rank says why (naming itself) and ends the run within its wait (QUICKSAND_OPENING_WAIT,
+# 4 s here, 20 by default), exit non-zero,
 # the checkpoint as it was
 damaged = make_case("damaged", 2, "2 1 1")
 run(damaged, ranks=2, end=0.05)
@@ -224,7 +225,7 @@ with open(os.path.join(damaged, "output/openfoam/processor1/0.05/p"), "w") as f:
 checkpoint = open(os.path.join(damaged, "output/checkpoint.h5"), "rb").read()
 start = time.monotonic()
 try:
-    p = run(damaged, ranks=2, end=0.1, resume=True, expect=None)
+    p = run(damaged, ranks=2, end=0.1, resume=True, expect=None, env={"QUICKSAND_OPENING_WAIT": "4"})
     took = time.monotonic() - start
     print(f"a damaged processor folder on rank 1: exit {p.returncode} after {took:.1f} s", flush=True)
     if p.returncode == 0:
