@@ -6,7 +6,7 @@
 #
 # Without arguments it then builds a second tree with AddressSanitizer and UBSan (build-sanitize)
 # and runs the fast labels (unit, hostile, resume, cli) there too (QUICKSAND_SANITIZE=0 skips it),
-# and a third with clang and libFuzzer (build-fuzz) whose three fuzzers run 60 s each
+# and a third with clang and libFuzzer (build-fuzz) whose three fuzzers run 40 s each
 # (tests/fuzz; QUICKSAND_FUZZ=0 skips it, QUICKSAND_FUZZ_SECONDS sets the time).
 #
 # Ends with CTest's summary line ("100% tests passed, 0 tests failed out of N") and exits with
@@ -50,7 +50,7 @@ fuzz_stage() {
     local dir="${build_dir}-fuzz"
     bash tools/setup.sh --fuzz >/dev/null || return 1
     CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQUICKSAND_FUZZ=ON \
-        -DQUICKSAND_FUZZ_SECONDS="${QUICKSAND_FUZZ_SECONDS:-60}" -DQUICKSAND_BUILD_TESTS=OFF \
+        -DQUICKSAND_FUZZ_SECONDS="${QUICKSAND_FUZZ_SECONDS:-40}" -DQUICKSAND_BUILD_TESTS=OFF \
         -DQUICKSAND_WITH_OPENFOAM=OFF -DQUICKSAND_BUILD_BENCHMARKS=OFF >/dev/null || return 1
     cmake --build "$dir" -j2 --target fuzz_case_loader fuzz_checkpoint fuzz_checkpoint_state quicksand \
         >/dev/null || return 1

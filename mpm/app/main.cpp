@@ -115,10 +115,12 @@ int main(int argc, char** argv) {
         try {
             qs::printCheckReport(config, report);
             const bool line = config.reservoir.kind == qs::ReservoirKind::OpenFoam;
-            if (ranks > 1 && line && !qs::decomposable(config, ranks)) {
+            if (ranks > 1 && line && !qs::cutBesideALine(config, ranks)) {
                 // 1D, or too few columns: each rank steps the column whole beside its part of the line
                 report << "decomposition: " << ranks << " ranks: the column is stepped whole on each ("
-                       << (config.grid.dimension == 1 ? "a 1D column is not cut" : "too few columns to cut")
+                       << (config.grid.dimension == 1       ? "a 1D column is not cut"
+                           : qs::decomposable(config, ranks) ? "its semi-implicit step needs hypre to be cut"
+                                                               : "too few columns to cut")
                        << "); the OpenFOAM line is decomposed by its system/decomposeParDict (numberOfSubdomains "
                        << ranks << "), or solved on rank 0 without one (docs/openfoam.md, \"A line on MPI ranks\")\n";
             } else {

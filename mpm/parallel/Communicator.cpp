@@ -44,6 +44,13 @@ bool launchedByMpi() {
     return false;
 }
 
+namespace {
+/// A communicator of quicksand's own for allGatherWithin: a gather that one rank may enter while
+/// the others are inside a collective of OpenFOAM's on MPI_COMM_WORLD must never match one of
+/// those. Made (collectively) when MPI starts.
+MPI_Comm agreementComm = MPI_COMM_NULL;
+}  // namespace
+
 MpiSession::MpiSession(int& argc, char**& argv) {
     // Without a launcher quicksand is one process and leaves MPI alone: no singleton start (its
     // start-up time, its allocations that LeakSanitizer reports at exit, its signal handling),
@@ -57,13 +64,17 @@ MpiSession::MpiSession(int& argc, char**& argv) {
     Communicator& w = Communicator::mutableWorld();
     MPI_Comm_rank(MPI_COMM_WORLD, &w.rank_);
     MPI_Comm_size(MPI_COMM_WORLD, &w.size_);
+    MPI_Comm_dup(MPI_COMM_WORLD, &agreementComm);
 }
 
 MpiSession::~MpiSession() {
     if (!initialized_) return;
     int finalized = 0;
     MPI_Finalized(&finalized);
-    if (!finalized) MPI_Finalize();
+    if (!finalized) {
+        if (agreementComm != MPI_COMM_NULL) MPI_Comm_free(&agreementComm);
+        MPI_Finalize();
+    }
 }
 
 namespace {
@@ -136,7 +147,8 @@ bool Communicator::allGatherWithin(double local, double seconds, std::vector<dou
     sent = local;
     received.assign(static_cast<std::size_t>(size_), 0.0);
     MPI_Request request;
-    MPI_Iallgather(&sent, 1, MPI_DOUBLE, received.data(), 1, MPI_DOUBLE, MPI_COMM_WORLD, &request);
+    MPI_Iallgather(&sent, 1, MPI_DOUBLE, received.data(), 1, MPI_DOUBLE,
+                   agreementComm != MPI_COMM_NULL ? agreementComm : MPI_COMM_WORLD, &request);
     const auto start = std::chrono::steady_clock::now();
     for (int done = 0;;) {
         MPI_Test(&request, &done, MPI_STATUS_IGNORE);

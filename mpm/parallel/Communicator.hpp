@@ -46,7 +46,9 @@ public:
     std::vector<double> allGather(double local) const;
     /// As allGather, waiting at most `seconds` for the others (a non-blocking gather, polled):
     /// false if they have not all arrived by then (they may be held in a collective of someone
-    /// else's, OpenFOAM's), `all` then undefined. Every rank must call it alike.
+    /// else's, OpenFOAM's: the gather is on a communicator of its own, so it never matches one
+    /// of theirs), `all` then undefined. Every rank must call it alike; after a false the run
+    /// must end (Communicator::abort): the gather is left pending.
     bool allGatherWithin(double local, double seconds, std::vector<double>& all) const;
     /// Every rank's values, of any length, concatenated in rank order, on every rank.
     std::vector<double> allGatherv(const std::vector<double>& local) const;

@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/Error.hpp"
+#include "parallel/DistributedPressureSolver.hpp"
 #include "solver/ColumnBuilder.hpp"
 #include "solver/RunSize.hpp"
 
@@ -227,9 +228,14 @@ bool decomposable(const CaseConfig& config, int ranks) {
     try {
         decompose(config, ranks);
         return true;
-    } catch (const Error&) {
+    } catch (const std::exception&) {  // qs::Error, or a grid too large to price
         return false;
     }
+}
+
+bool cutBesideALine(const CaseConfig& config, int ranks) {
+    return decomposable(config, ranks) &&
+           (config.time.scheme == TimeScheme::Explicit || distributedSolverAvailable());
 }
 
 Decomposition decompose(const CaseConfig& config, int ranks) {

@@ -50,14 +50,17 @@ struct DecompositionBlock {
     /// The neighbours' points copied into the window of ghost cells (ghostPointLayers deep beside
     /// each cut: parallel/RankShare.hpp) each step, at the start (estimated from the case)
     double ghostPoints = 0;
-    double bytes = 0;       ///< estimated peak memory of the rank's arrays
+    /// estimated memory of the rank's step: its points with the window's ghosts, the whole
+    /// grid's arrays. Not counted: implicit coupling's copy of the window's start (a coupled run),
+    /// and rank 0's gathered copy of every point while it writes a checkpoint or fields.h5
+    double bytes = 0;
 };
 
 struct Decomposition {
     int ranks = 1;
     int dimension = 1;
     int ghostLayers = 1;   ///< the node halo of the thin design (the price, the least block)
-    int windowLayers = 3;  ///< cells of ghost points the step keeps beside each cut (ghostPointLayers)
+    int windowLayers = 2;  ///< cells of ghost points the step keeps beside each cut (ghostPointLayers)
     std::array<int, 3> parts{1, 1, 1};          ///< blocks along each axis (the last one vertical)
     std::array<std::vector<Index>, 3> cuts;     ///< per axis parts + 1 cell indices, 0 .. cells
     std::vector<DecompositionBlock> blocks;     ///< one per rank; rank = lexicographic, axis 0 fastest
@@ -93,6 +96,11 @@ Decomposition decompose(const CaseConfig& config, int ranks);
 /// cannot be cut (1D, or fewer columns than the ranks need) is stepped whole on every rank, the
 /// line decomposed; any other column that cannot be cut is refused, with decompose's reason.
 bool decomposable(const CaseConfig& config, int ranks);
+
+/// Whether a column beside an OpenFOAM line is cut over `ranks` (else stepped whole on every
+/// rank): where it is decomposable and its time scheme steps on ranks in this build (the
+/// semi-implicit one needs hypre).
+bool cutBesideALine(const CaseConfig& config, int ranks);
 
 /// The blocks of one process grid (parts[d] blocks along axis d; 1 beyond the grid's axes),
 /// whatever its price: to compare cuts by measurement (benchmarks), or to force one.

@@ -95,6 +95,8 @@ public:
     bool ownsColumn(Index column) const { return columnOwned_[column] != 0; }
     /// Cells of the block and its window: where this rank's points, owned and ghosts, can be.
     Index windowCells() const { return static_cast<Index>(std::count(inMyWindow_.begin(), inMyWindow_.end(), 1)); }
+    /// Cells of the block.
+    Index ownedCells() const { return static_cast<Index>(std::count(cellOwner_.begin(), cellOwner_.end(), comm_.rank())); }
     /// Points sent and received by the last exchange, and the values sent (for the figures of
     /// docs/performance.md: what crosses a cut per step).
     std::size_t sentPoints() const { return sent_; }

@@ -133,8 +133,13 @@ void DoublePointSolver<D>::allocate() {
     const std::size_t liquidCapacity = static_cast<std::size_t>(
         qs::liquidCapacity(config_, reach, static_cast<std::int64_t>(liquid_.size())));
     reservePoints(liquid_, liquidCapacity, scratch_, 6);
-    // the reorder's scratch holds the widest field: the stress (6), C (D x D) or the internal state
-    reservePoints(solid_, solid_.size(), scratch_, std::max({6, D * D, solid_.internalCount}));
+    // The sand's points stay, but over MPI ranks the ghosts join them each step: room for the
+    // window's share of them (its cells over the block's, a tenth more), so that the first
+    // exchange does not grow every field. The reorder's scratch holds the widest field: the
+    // stress (6), C (D x D) or the internal state.
+    const double window = ranks_ ? 1.1 * double(ranks_->windowCells()) / double(std::max<Index>(1, ranks_->ownedCells())) : 1.0;
+    const std::size_t solidCapacity = static_cast<std::size_t>(window * double(solid_.size()));
+    reservePoints(solid_, solidCapacity, scratch_, std::max({6, D * D, solid_.internalCount}));
     scratch_.reals.reserve(liquidCapacity * 6);
     scratch_.ints.reserve(liquidCapacity);
     scratch_.order.reserve(liquidCapacity);
@@ -142,7 +147,8 @@ void DoublePointSolver<D>::allocate() {
     liquid_.shape.weights = solid_.shape.weights = gimp;  // linear weights come from the positions
     liquid_.shape.reserve(liquidCapacity);
     liquid_.weight.reserve(liquidCapacity);
-    solid_.shape.reserve(solid_.size());
+    solid_.shape.reserve(solidCapacity);
+    solid_.stressReturn.reserve(solidCapacity);
     solid_.stressReturn.assign(solid_.size(), 0);
     dropFlags_.reserve(liquidCapacity);
     spillOrder_.reserve(liquidCapacity);

@@ -141,7 +141,7 @@ public:
           // window from each rank's own points: DoublePointSolver::saveWindowStart) where it can
           // be; a 1D column, or one with too few columns for the ranks, is stepped whole on
           // every rank beside the decomposed line (it costs little beside the line)
-          columnRanks_(ranks_ && (!windowed_ || decomposable(config, ranks_->size())) ? ranks_ : nullptr),
+          columnRanks_(ranks_ && (!windowed_ || cutBesideALine(config, ranks_->size())) ? ranks_ : nullptr),
           root_(!ranks_ || ranks_->rank() == 0) {
         open();
     }
@@ -496,7 +496,8 @@ RunSummary RunOf<D>::finish() {
                 formatSeconds(r.wallSeconds).c_str(), r.pointUpdatesPerSecond,
                 options_.writeFiles ? outDir_.string().c_str() : "(memory)");
     if (columnRanks_)
-        std::printf("quicksand: sent to neighbouring ranks per step: %s a rank on average, %s from the busiest\n",
+        std::printf("quicksand: sent to neighbouring ranks per step (points and grid values; not hypre's solves "
+                    "nor the reductions): %s a rank on average, %s from the busiest\n",
                     formatBytes(sentMean).c_str(), formatBytes(sentMax).c_str());
     if (!r.couplingSummary.empty()) std::printf("quicksand: %s\n", r.couplingSummary.c_str());
     const IntegratorStats& i = r.integrator;

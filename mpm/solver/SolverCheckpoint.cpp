@@ -318,7 +318,7 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
 // stay in the order the rank stepped them), its whole copy of the grid's carried fields (their
 // window cells included, which a checkpoint takes from their owners), and its own parts of the
 // sums that a checkpoint adds over the ranks (the chamber's injected volume, the sand carried
-// out). Nothing here is collective but the integrator's, which every rank enters alike.
+// out). Nothing here is collective.
 template <int D>
 void DoublePointSolver<D>::saveWindowStart(CheckpointData& data) const {
     if (!ranks_) return saveState(data);

@@ -10,7 +10,8 @@ its OpenFOAM tube (a wedge, 5 x 10 cells), run to 0.05 s:
     faces on one rank, the reservoir's on another), each rank its processorN/: the gate's flux and
     pressure and the column's series within the line's solver tolerance of the one-rank run
     (tolerance 1e-6 of each quantity's scale; guard 1e-7, achieved about 1e-8); the same with a
-    2D column, cut over the ranks as the line is (implicit coupling's rollback on each rank);
+    2D column, cut over the ranks as the line is (implicit coupling's rollback on each rank), under
+    both time schemes;
  3. reconstructPar on output/openfoam/ gives the serial run's time folders, with its pressure
     field within 1e-6 m2/s2 (the p solver's tolerance is 1e-6 absolute);
  4. checkpoints across rank counts: 1 then 2 ranks, and 2 then 1, against 1 then 1 (the same
@@ -143,21 +144,24 @@ for ranks, split in ((2, "2 1 1"), (3, "3 1 1")):
 # window of ghost points do not cover the grid), against one rank: implicit coupling repeats each
 # window from every rank's own points (DoublePointSolver::saveWindowStart)
 PLANE = ["--set", "grid.dimension=2", "--set", "grid.width=0.1116"]
-plane1, plane2 = make_case("plane1"), make_case("plane2", 2, "2 1 1")
-run(plane1, extra=PLANE)
-c = subprocess.run([*mpiexec, "-np", "2", quicksand, "check", plane2, *PLANE], capture_output=True, text=True,
-                   timeout=120)
-if c.returncode != 0 or "decomposition: 2 ranks, 2 x 1 blocks" not in c.stdout or "line is decomposed" not in c.stdout:
-    fail("check of a 2D column beside a line on 2 ranks did not show the column's blocks and the line's "
-         "decomposition:\n" + c.stdout[-2000:] + c.stderr[-2000:])
-p = run(plane2, ranks=2, extra=PLANE)
-if "blocks of whole columns" not in p.stdout or "stepped whole" in p.stdout:
-    fail("a 2D column beside a line on 2 ranks was not cut over them:\n" + p.stdout)
-m = re.search(r"coupling: (\d+) windows, (\d+) model solves", p.stdout)
-if not m or int(m.group(2)) <= int(m.group(1)):
-    fail("the 2D column's implicit coupling repeated no window (as many model solves as windows): the rollback "
-         "was not exercised:\n" + p.stdout[-1500:])
-compare("a 2D column cut over 2 ranks, the line decomposed over them, against one rank", plane1, plane2)
+for scheme in ("explicit", "semi_implicit"):
+    extra = PLANE + ["--set", f'time.scheme="{scheme}"']
+    plane1, plane2 = make_case(f"plane1_{scheme}"), make_case(f"plane2_{scheme}", 2, "2 1 1")
+    run(plane1, extra=extra)
+    c = subprocess.run([*mpiexec, "-np", "2", quicksand, "check", plane2, *extra], capture_output=True, text=True,
+                       timeout=120)
+    if c.returncode != 0 or "decomposition: 2 ranks, 2 x 1 blocks" not in c.stdout or "line is decomposed" not in c.stdout:
+        fail(f"{scheme}: check of a 2D column beside a line on 2 ranks did not show the column's blocks and the "
+             "line's decomposition:\n" + c.stdout[-2000:] + c.stderr[-2000:])
+    p = run(plane2, ranks=2, extra=extra)
+    if "blocks of whole columns" not in p.stdout or "stepped whole" in p.stdout:
+        fail(f"{scheme}: a 2D column beside a line on 2 ranks was not cut over them:\n" + p.stdout)
+    m = re.search(r"coupling: (\d+) windows, (\d+) model solves", p.stdout)
+    if not m or int(m.group(2)) <= int(m.group(1)):
+        fail(f"{scheme}: the 2D column's implicit coupling repeated no window (as many model solves as windows): "
+             "the rollback was not exercised:\n" + p.stdout[-1500:])
+    compare(f"a 2D column cut over 2 ranks ({scheme}), the line decomposed over them, against one rank",
+            plane1, plane2)
 
 # 3. reconstructPar gives the serial run's folders and fields
 decomposed = os.path.join(work, "decomposed2")
@@ -230,7 +234,9 @@ try:
     print(f"a damaged processor folder on rank 1: exit {p.returncode} after {took:.1f} s", flush=True)
     if p.returncode == 0:
         fail("a resume with rank 1's processor folder damaged ran on:\n" + p.stdout[-1500:])
-    if "rank 1" not in p.stderr or "output/openfoam/processor1/0.05/p" not in p.stderr:
+    if took > 4 + 30:
+        fail(f"a damaged processor folder on rank 1: the run took {took:.1f} s to end, its wait is 4 s")
+    if "error: rank 1 of 2" not in p.stderr or "output/openfoam/processor1/0.05/p" not in p.stderr:
         fail("a damaged processor folder on rank 1: the error does not name the rank and the damaged file:\n"
              + p.stderr[-3000:])
     if p.stderr.count("ill defined") != 1:
