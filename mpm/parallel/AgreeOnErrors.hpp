@@ -18,20 +18,26 @@
 
 namespace qs {
 
+/// Runs `f`; its error's message, or empty where it succeeded.
+template <class F>
+std::string failureOf(F&& f) {
+    try {
+        f();
+    } catch (const Error& e) {
+        return e.what();
+    } catch (const std::exception& e) {
+        return std::string("internal error: ") + e.what();
+    }
+    return {};
+}
+
 /// Runs `f` on every rank of `ranks` (or alone where ranks is null) and agrees on its errors: if
 /// any rank's fails, every rank throws the lowest failing rank's message as a SharedError, said
 /// once (by rank 0).
 template <class F>
 void agreeOnErrors(const Communicator* ranks, F&& f) {
     if (!ranks || !ranks->parallel()) return f();
-    std::string failure;
-    try {
-        f();
-    } catch (const Error& e) {
-        failure = e.what();
-    } catch (const std::exception& e) {
-        failure = std::string("internal error: ") + e.what();
-    }
+    const std::string failure = failureOf(f);
     const std::vector<double> failed = ranks->allGather(failure.empty() ? 0.0 : 1.0);
     for (int r = 0; r < static_cast<int>(failed.size()); ++r)
         if (failed[r] != 0) throw SharedError(ranks->broadcast(failure, r));
@@ -47,14 +53,7 @@ void agreeOnErrors(const Communicator* ranks, F&& f) {
 template <class F>
 void agreeOnErrorsWithin(const Communicator* ranks, double seconds, F&& f) {
     if (!ranks || !ranks->parallel()) return f();
-    std::string failure;
-    try {
-        f();
-    } catch (const Error& e) {
-        failure = e.what();
-    } catch (const std::exception& e) {
-        failure = std::string("internal error: ") + e.what();
-    }
+    const std::string failure = failureOf(f);
     std::vector<double> failed;
     const bool heard = ranks->allGatherWithin(failure.empty() ? 0.0 : 1.0, failure.empty() ? 1e300 : seconds, failed);
     if (!heard) {
