@@ -40,7 +40,10 @@ sanitizer_stage() {
     # part of a build, are not run here (CI's 45 minutes)
     cmake --build "$dir" -j2 --target quicksand quicksand_unit_tests quicksand_resume_tests \
         quicksand_study_StudyResume quicksand_study_HostileStudies >/dev/null || return 1
-    ctest --test-dir "$dir" --output-on-failure --no-tests=error -j2 -L 'unit|hostile|resume|cli' 2>&1 \
+    # the three longest (166, 81 and 74 s here under the sanitizers, half the stage) stay out: the
+    # semi-implicit step, its resume and 2D pipes' resume are still run by shorter tests here
+    ctest --test-dir "$dir" --output-on-failure --no-tests=error -j2 -L 'unit|hostile|resume|cli' \
+        -E 'Resume.A2DRunWithPipesResumesWithTheSamePipesCsv|Resume.ASemiImplicitRunWithCGResumesBitIdentically|Determinism.OneAndTwoThreadsGiveIdenticalResultsWithTheSemiImplicitStep' 2>&1 \
         | grep -E '^(.*\*\*\*|[0-9]+% tests passed)' | sed 's/^/sanitizers: /'
     return "${PIPESTATUS[0]}"
 }

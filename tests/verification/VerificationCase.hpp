@@ -32,10 +32,13 @@ const char* defaultTestScheme();
 /// The time scheme the suite runs with: the binary's (ctest runs the suite once per scheme,
 /// tests/CMakeLists.txt: every problem holds for both with the same tolerances), unless the
 /// environment's QUICKSAND_TEST_SCHEME names one.
-inline void applyTestScheme(CaseConfig& c) {
+inline std::string testScheme() {
     const char* scheme = std::getenv("QUICKSAND_TEST_SCHEME");
-    if (!scheme || !*scheme) scheme = defaultTestScheme();
-    const std::string s = scheme;
+    return scheme && *scheme ? scheme : defaultTestScheme();
+}
+
+inline void applyTestScheme(CaseConfig& c) {
+    const std::string s = testScheme();
     if (s == "semi_implicit") c.time.scheme = TimeScheme::SemiImplicit;
     else if (s == "explicit") c.time.scheme = TimeScheme::Explicit;
     else throw std::runtime_error("QUICKSAND_TEST_SCHEME = '" + s + "': expected explicit or semi_implicit");
