@@ -16,6 +16,7 @@
 #include "solver/ColumnBuilder.hpp"
 #include "solver/RunPreconditions.hpp"
 #include "solver/RunSize.hpp"
+#include "solver/TimeLattice.hpp"
 
 namespace qs {
 
@@ -146,12 +147,13 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
     // from the materials' constitutive models
     const bool semi = config.time.scheme == TimeScheme::SemiImplicit;
     const double cFast = fastestWaveSpeed(config), cSkeleton = skeletonWaveSpeed(config);
-    const double c = schemeWaveSpeed(config);
-    const double dtStable = config.time.courant * h / c;
+    const TimeLattice lattice = timeLattice(config);
     out << "time step (" << (semi ? "semi-implicit" : "explicit") << " scheme): c_fast = " << cFast
-        << " m/s, c_skeleton = " << cSkeleton << " m/s; dt = courant h / " << (semi ? "c_skeleton" : "c_fast")
-        << " = " << dtStable << " s ("
-        << stepCount(config.time.end / (config.time.dt ? *config.time.dt : dtStable)) << " steps to t = " << config.time.end << " s)\n";
+        << " m/s, c_skeleton = " << cSkeleton << " m/s; "
+        << (config.time.dt ? "time.dt" : std::string("courant h / ") + (semi ? "c_skeleton" : "c_fast")) << " = "
+        << lattice.stableDt << " s, fitted to dt = " << lattice.dt << " s: " << lattice.stepsPerOutput
+        << " steps fill each output interval of " << config.time.outputInterval << " s ("
+        << stepCount(config.time.end / lattice.dt) << " steps to t = " << config.time.end << " s)\n";
     out << "  water: K_L = " << config.liquid.bulkModulus << " Pa"
         << (config.liquid.bulkModulusGiven ? "" : std::string(" (not given: ") + config.liquid.defaultWaterName() + ")")
         << "\n";
@@ -197,12 +199,14 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
             out << "note: the gradient exceeds the critical gradient: the bed will heave and fluidise\n";
     }
     if (config.reservoir.kind == ReservoirKind::OpenFoam) {
-        const double steps = std::max(1.0, std::round(config.coupling.window / dtStable));
         out << "reservoir: OpenFOAM case " << config.reservoir.openfoamCase << " (patches '"
             << config.reservoir.gatePatch << "', '" << config.reservoir.reservoirPatch << "'), level "
             << config.reservoir.head << " m, area " << config.reservoir.area << " m2\n";
         out << "coupling: " << (config.coupling.scheme == CouplingKind::Implicit ? "implicit (Aitken)" : "explicit")
-            << ", window " << config.coupling.window << " s = " << steps << " MPM steps\n";
+            << ", window " << lattice.window << " s = " << lattice.stepsPerWindow << " MPM steps";
+        if (lattice.window != config.coupling.window)
+            out << " (coupling.window " << config.coupling.window << " s, fitted into the output interval)";
+        out << "\n";
         for (const auto& line : checkOpenFoamCase(config)) out << "  " << line << "\n";
         CaseConfig withoutTube = config;  // the column alone: an upper bound of the flux
         withoutTube.reservoir.kind = ReservoirKind::ConstantHead;

@@ -104,7 +104,7 @@ protected:
 
     WindowedModel& model_;
     CouplingInterface& gate_;
-    const CouplingConfig& config_;
+    const CouplingConfig config_;  ///< a copy: the run fits the window (solver/TimeLattice.hpp)
     std::ostream* log_;
     CouplingStats stats_;
     double lastFlux_ = 0;       ///< m3/s, accepted mean flux of the last window

@@ -56,8 +56,10 @@ void DoublePointSolver<D>::exchangeAtBoundaries() {
         }
     }
 
-    time_ += dt_;
+    // the step count times the step, not a running sum: outputs stay on the times asked
+    // (solver/TimeLattice.hpp), also after 1e8 steps
     ++steps_;
+    time_ = Real(steps_) * dt_;
 }
 
 /// The overflow's weir over MPI ranks: the decision spillOverRim takes (boundary/Overflow.hpp),

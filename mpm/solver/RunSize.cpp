@@ -15,6 +15,7 @@
 #include "points/LiquidPoints.hpp"
 #include "points/SolidPoints.hpp"
 #include "solver/ColumnBuilder.hpp"
+#include "solver/TimeLattice.hpp"
 
 namespace qs {
 
@@ -111,10 +112,12 @@ double schemeWaveSpeed(const CaseConfig& config) {
     return config.time.scheme == TimeScheme::SemiImplicit ? skeletonWaveSpeed(config) : fastestWaveSpeed(config);
 }
 
-double timeStep(const CaseConfig& config) {
+double stableTimeStep(const CaseConfig& config) {
     if (config.time.dt) return *config.time.dt;
     return config.time.courant * config.grid.cellSize / schemeWaveSpeed(config);
 }
+
+double timeStep(const CaseConfig& config) { return timeLattice(config).dt; }
 
 RunSize estimateRunSize(const CaseConfig& config) {
     const int D = config.grid.dimension;

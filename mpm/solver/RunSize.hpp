@@ -71,7 +71,10 @@ double skeletonWaveSpeed(const CaseConfig& config);
 /// m/s, the wave that bounds the step of config.time.scheme: fastestWaveSpeed (explicit) or
 /// skeletonWaveSpeed (semi-implicit).
 double schemeWaveSpeed(const CaseConfig& config);
-/// s, the step a run takes: time.dt if given, else courant h / c, c = schemeWaveSpeed.
+/// s, the bound of the step: time.dt if given, else courant h / c, c = schemeWaveSpeed.
+double stableTimeStep(const CaseConfig& config);
+/// s, the step a run takes: stableTimeStep fitted down to the output interval (and an OpenFOAM
+/// line's coupling window), solver/TimeLattice.hpp.
 double timeStep(const CaseConfig& config);
 
 struct MachineMemory {

@@ -25,6 +25,7 @@
 #include "solver/Interruption.hpp"
 #include "solver/RunPreconditions.hpp"
 #include "solver/RunSize.hpp"
+#include "solver/TimeLattice.hpp"
 
 namespace qs {
 
@@ -238,7 +239,11 @@ void RunOf<D>::open() {
     if (windowed_ && options_.writeFiles && root_)
         couplingLog_.open(outDir_ / "coupling.log", options_.resume ? std::ios::app : std::ios::trunc);
     if (windowed_) {
-        auto w = std::make_unique<WindowAdvancer<D>>(*solver_, *model_, *gate_, config.coupling,
+        // an OpenFOAM line's window is fitted into the output interval (solver/TimeLattice.hpp);
+        // a model the caller gives keeps the case's
+        CouplingConfig coupling = config.coupling;
+        if (config.reservoir.kind == ReservoirKind::OpenFoam) coupling.window = timeLattice(config).window;
+        auto w = std::make_unique<WindowAdvancer<D>>(*solver_, *model_, *gate_, coupling,
                                                      couplingLog_.is_open() ? &couplingLog_ : nullptr);
         // the chamber water's acoustic impedance rho c / A damps its ringing between windows
         const double c = std::sqrt(config.liquid.bulkModulus / config.liquid.density);

@@ -247,7 +247,9 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     checkWater(data, semi);
     QS_CHECK(std::abs(data.scalar("dt") - dt_) <= 1e-12 * dt_,
              "the checkpoint was written with dt = " << data.scalar("dt") << " s, the case now gives "
-                                                     << dt_ << " s: grid or material data changed");
+                                                     << dt_ << " s: grid, material or time data changed (or it "
+                                                        "was written before 2026-12-07, when the step was not yet "
+                                                        "fitted to time.output_interval)");
     // fields the registry dates (the solid's velocity gradient, the water's cavity) start at zero
     // from a checkpoint written before them
     getSet(data, "solid", solid_, D);

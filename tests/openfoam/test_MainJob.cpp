@@ -23,9 +23,11 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::vector<ColumnState> runFor(const std::string& relative, const std::string& tag, double end, RunSummary& summary) {
+std::vector<ColumnState> runFor(const std::string& relative, const std::string& tag, double end, RunSummary& summary,
+                                CaseConfig* config = nullptr) {
     const fs::path dir = freshCaseCopy(relative, tag);
     const CaseConfig c = loadCase(dir.string());
+    if (config) *config = c;
     std::vector<ColumnState> series;
     RunOptions o;
     o.quiet = true;
@@ -41,7 +43,8 @@ TEST(MainJob, FluidisesThroughATurbulentLineAsItsLumpedTwin) {
     QS_REQUIRE_OPENFOAM();
     const double end = 30.0;
     RunSummary coupled, lumped;
-    const auto a = runFor("deltaresColumn", "main-job", end, coupled);
+    CaseConfig c;
+    const auto a = runFor("deltaresColumn", "main-job", end, coupled, &c);
     const auto b = runFor("deltaresColumnLumped", "main-job-lumped", end, lumped);
     EXPECT_NEAR(coupled.final.time, end, 1e-3);
     EXPECT_EQ(coupled.coupling.unconverged, 0);
@@ -69,6 +72,21 @@ TEST(MainJob, FluidisesThroughATurbulentLineAsItsLumpedTwin) {
         EXPECT_NEAR(fallA, fallB, 0.10 * fallB) << "t = " << a[k].time;
         EXPECT_NEAR(a[k].gateFlux, b[k].gateFlux, 0.07 * b[k].gateFlux) << "t = " << a[k].time;
     }
+    // outputs and OpenFOAM's time directories on the times asked (solver/TimeLattice.hpp): the
+    // window of 0.01 s fitted 502 steps of 1.992e-5 s; before, 500 steps of 1.99967e-5 s wrote
+    // rows at 0.509983605, 1.00996753, ... and directories 0.5099836, 10.00967821
+    const double interval = c.time.outputInterval;
+    for (std::size_t k = 0; k < a.size(); ++k) EXPECT_NEAR(a[k].time, double(k) * interval, 1e-9 * end) << k;
+    int directories = 0;
+    for (const auto& entry : fs::directory_iterator(fs::path(c.caseDirectory) / c.output.directory / "openfoam")) {
+        const std::string name = entry.path().filename().string();
+        if (name.find_first_not_of("0123456789.") != std::string::npos) continue;
+        const double k = std::stod(name) / interval;
+        EXPECT_NEAR(k, std::round(k), 1e-9) << "output/openfoam/" << name;
+        EXPECT_LE(name.size(), 4u) << "output/openfoam/" << name << ": not on a multiple of " << interval << " s";
+        ++directories;
+    }
+    EXPECT_GE(directories, 2) << "OpenFOAM wrote no time directories";
     std::printf("main job, 30 s: fluidised share %.2f, expansion %.1f mm, liquid ledger %.2g of the inflow, solid "
                 "ledger %.2g; head's fall within %.1f %% of the lumped twin's; %s\n",
                 share, 1e3 * expansion, ledger, solid, 100 * worst, coupled.couplingSummary.c_str());
