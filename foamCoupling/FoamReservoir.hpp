@@ -28,7 +28,7 @@
 #include "reservoir/ReservoirShape.hpp"
 #include "FoamTube.hpp"
 #include "coupling/WindowedModel.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "parallel/Communicator.hpp"
 
 namespace qs::foam {

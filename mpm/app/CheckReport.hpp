@@ -2,7 +2,7 @@
 // `quicksand check CASE`: the derived quantities a user wants to see before a run.
 #include <iosfwd>
 
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 namespace qs {
 

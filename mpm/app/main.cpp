@@ -6,7 +6,7 @@
 //   quicksand run CASE [--resume] [--set KEY=VALUE]...   run it; results in CASE/output (series.csv,
 //                                                        fields.h5/.xdmf, case.effective.toml)
 //   quicksand --version                                  the version and the build's options
-// --set overrides one key of case.toml for this run (io/CaseOverride.hpp, docs/case-format.md).
+// --set overrides one key of case.toml for this run (case/CaseOverride.hpp, docs/case-format.md).
 // Under `mpirun -np N` every rank runs this; what the ranks print, rank 0 prints once.
 //
 // Exit codes: 0 success, 1 bad input or run-time error (message on stderr), 2 usage.
@@ -21,7 +21,7 @@
 #include "core/BuildInfo.hpp"
 #include "core/Error.hpp"
 #include "FoamAvailability.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/Decomposition.hpp"
 #include "solver/Interruption.hpp"

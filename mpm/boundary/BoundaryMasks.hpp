@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "grid/Grid.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 namespace qs {
 

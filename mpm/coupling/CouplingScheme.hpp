@@ -34,7 +34,7 @@
 #include <memory>
 
 #include "coupling/CouplingInterface.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "io/Checkpoint.hpp"
 
 namespace qs {

@@ -11,8 +11,8 @@
 //     h - lp <= |r| < h+lp N = (h + lp - |r|)^2 / (4 h lp)
 #include <cmath>
 
+#include "core/ModelChoices.hpp"
 #include "core/Types.hpp"
-#include "io/CaseConfig.hpp"
 
 namespace qs {
 

@@ -4,10 +4,10 @@
 //   std::shared_ptr<const ConstitutiveModel> m = makeConstitutiveModel(materialConfig);
 //
 // A new model is one new file behind materials/ConstitutiveModel.hpp plus one line here (and its
-// keys in io/CaseLoader and docs/case-format.md); the solver is not edited.
+// keys in case/CaseLoader and docs/case-format.md); the solver is not edited.
 #include <memory>
 
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "materials/ConstitutiveModel.hpp"
 
 namespace qs {

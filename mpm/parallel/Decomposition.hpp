@@ -33,7 +33,7 @@
 #include <vector>
 
 #include "core/Types.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 namespace qs {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "core/Types.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 namespace qs {
 

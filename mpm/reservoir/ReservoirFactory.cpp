@@ -4,7 +4,7 @@
 #include "reservoir/ReservoirModel.hpp"
 
 #include "core/Error.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "reservoir/ConstantHead.hpp"
 #include "reservoir/LumpedReservoir.hpp"
 

@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "grid/Grid.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "points/LiquidPoints.hpp"
 #include "points/SolidPoints.hpp"
 

@@ -37,7 +37,7 @@
 #include "boundary/BoundaryMasks.hpp"
 #include "boundary/InflowChamber.hpp"
 #include "grid/Grid.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "materials/ConstitutiveModel.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/RankShare.hpp"

@@ -83,7 +83,7 @@ void DoublePointSolver<D>::classifyCells() {
     // The overflow's top cells count as full only while the water stands there: fallen a cell
     // below it (the reservoir drained the column, the water spilled elsewhere), the grid would hold
     // water the column has lost, and the run stops saying so (the head is checked against the
-    // overflow before the run, io/CaseRules.cpp).
+    // overflow before the run, case/CaseRules.cpp).
     // The water is measured over the top two rows, from the points' extents (a point's water spans
     // z +- V / (2 a), a its footprint), and the run stops when they hold less than one row's worth.
     // A liquid point spills whole (the weir, boundary/Overflow.hpp), so the row under the rim loses

@@ -22,7 +22,7 @@
 
 #include "core/Types.hpp"
 #include "grid/Grid.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "solver/SlabCholesky.hpp"
 #include "solver/TridiagonalCholesky.hpp"
 

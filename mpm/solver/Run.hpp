@@ -18,7 +18,7 @@
 
 #include "coupling/CouplingScheme.hpp"
 #include "coupling/WindowedModel.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "solver/DoublePointSolver.hpp"
 
 namespace qs {

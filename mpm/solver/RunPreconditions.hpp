@@ -13,7 +13,7 @@
 //
 //   const CaseConfig config = loadCase(dir);
 //   validateRun(config);   // throws qs::Error naming the file and key, as run would
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 namespace qs {
 

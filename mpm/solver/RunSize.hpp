@@ -19,7 +19,7 @@
 #include <cstdint>
 #include <string>
 
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 namespace qs {
 

@@ -287,7 +287,7 @@ void RunOf<D>::open() {
         solver_->runGravityStage();
     }
     // the case as run: the file, or with the command line's overrides marked
-    // (io/CaseOverride.hpp). Written once the checkpoint has loaded: a resume that is refused
+    // (case/CaseOverride.hpp). Written once the checkpoint has loaded: a resume that is refused
     // (another scheme's checkpoint, say, with --set overrides) leaves the earlier one as it was
     if (root_ && options_.writeFiles && !config.effectiveCase.empty()) {
         std::ofstream effective(outDir_ / "case.effective.toml", std::ios::trunc);

@@ -15,7 +15,7 @@
 // time of the last good checkpoint named. What is written where: solver/Run.hpp.
 #include <memory>
 
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "solver/Run.hpp"
 
 namespace qs {

@@ -11,6 +11,7 @@
 #include "io/Checkpoint.hpp"
 #include "parallel/GatherPoints.hpp"
 #include "solver/DoublePointSolver.hpp"
+#include "solver/RunSize.hpp"
 
 namespace qs {
 
@@ -206,6 +207,7 @@ void DoublePointSolver<D>::saveState(CheckpointData& data) const {
     data.putScalar("time", time_);
     data.putScalar("steps", static_cast<double>(steps_));
     data.putScalar("dt", dt_);
+    data.putScalar("stable_dt", stableTimeStep(config_));  // what dt was fitted from (loadState)
     data.putScalar("semi_implicit", config_.time.scheme == TimeScheme::SemiImplicit ? 1 : 0);
     data.putScalar("bulk_modulus", config_.liquid.bulkModulus);
     if (ranks_) {
@@ -245,11 +247,21 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
                  << " scheme, the case now asks for time.scheme = \""
                  << (semi ? "explicit" : "semi_implicit") << "\": resume with the scheme it was written with");
     checkWater(data, semi);
-    QS_CHECK(std::abs(data.scalar("dt") - dt_) <= 1e-12 * dt_,
-             "the checkpoint was written with dt = " << data.scalar("dt") << " s, the case now gives "
-                                                     << dt_ << " s: grid, material or time data changed (or it "
-                                                        "was written before 2026-12-07, when the step was not yet "
-                                                        "fitted to time.output_interval)");
+    // The step a checkpoint was taken with was fitted to its run's output interval
+    // (solver/TimeLattice.hpp); the resumed run keeps it, so that it repeats the straight run bit
+    // for bit even where the resume asks for another time.end or output_interval (outputs then
+    // fall within a step of their times). What must not change is the stable step it was fitted
+    // from: the grid, the materials, the water, the Courant number. Before 2026-12-07 the step
+    // was the stable one.
+    const double written = data.scalar("dt");
+    const double writtenStable = data.has("stable_dt") ? data.scalar("stable_dt") : written;
+    const double stable = stableTimeStep(config_);
+    QS_CHECK(std::isfinite(written) && written > 0 && written <= writtenStable * (1 + 1e-12),
+             "entry 'dt' is " << written << " s, above the stable step " << writtenStable << " s" << kNotThisCase);
+    QS_CHECK(std::abs(writtenStable - stable) <= 1e-12 * stable,
+             "the checkpoint was written with a stable step of " << writtenStable << " s, the case now gives "
+                                                                 << stable << " s: grid, material or water data changed");
+    dt_ = written;
     // fields the registry dates (the solid's velocity gradient, the water's cavity) start at zero
     // from a checkpoint written before them
     getSet(data, "solid", solid_, D);

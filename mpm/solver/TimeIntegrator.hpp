@@ -20,7 +20,7 @@
 
 #include "boundary/BoundaryMasks.hpp"
 #include "grid/Grid.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "parallel/RankShare.hpp"
 #include "solver/GridFields.hpp"
 

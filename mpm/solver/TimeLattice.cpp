@@ -12,14 +12,22 @@ long partsOfAtMost(double span, double bound) {
     // a span that is a whole number of bounds to round-off takes that number, not one more
     const double parts = span / bound;
     const double whole = std::round(parts);
-    return static_cast<long>(std::max(1.0, std::abs(parts - whole) <= 1e-9 * whole ? whole : std::ceil(parts)));
+    const double count = std::max(1.0, std::abs(parts - whole) <= 1e-9 * whole ? whole : std::ceil(parts));
+    // a step of 1e-38 s (a bulk modulus typed as 1e70 Pa, found by fuzzing) would overflow the
+    // count: it saturates, and the run is refused for its step count (solver/RunSize.hpp)
+    return count < double(kMostParts) ? static_cast<long>(count) : kMostParts;
 }
 
 TimeLattice timeLattice(const CaseConfig& config, bool windowed) {
     TimeLattice l;
     l.stableDt = stableTimeStep(config);
     const double output = config.time.outputInterval;
-    if (windowed) {
+    if (partsOfAtMost(output, l.stableDt) == kMostParts) {
+        l.dt = l.stableDt;  // no run takes 1e15 steps an output: nothing to fit
+        l.window = windowed ? config.coupling.window : 0;
+        l.stepsPerWindow = windowed ? kMostParts : 0;
+        l.stepsPerOutput = kMostParts;
+    } else if (windowed) {
         l.window = output / double(partsOfAtMost(output, config.coupling.window));
         l.stepsPerWindow = partsOfAtMost(l.window, l.stableDt);
         l.dt = l.window / double(l.stepsPerWindow);

@@ -12,7 +12,7 @@
 // steps a sum would be off by some 1e-8 s and print 999.999995 for 1000.
 #pragma once
 
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 namespace qs {
 
@@ -29,7 +29,9 @@ struct TimeLattice {
 TimeLattice timeLattice(const CaseConfig& config, bool windowed);
 TimeLattice timeLattice(const CaseConfig& config);
 
-/// The least whole number of parts of `span` each at most `bound` long (1 if bound >= span).
+/// The least whole number of parts of `span` each at most `bound` long (1 if bound >= span),
+/// at most kMostParts.
 long partsOfAtMost(double span, double bound);
+constexpr long kMostParts = 1000000000000000L;  // 1e15, exact in a double
 
 }  // namespace qs

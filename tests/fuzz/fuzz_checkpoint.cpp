@@ -10,7 +10,7 @@
 #include <string>
 
 #include "core/Error.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "io/Checkpoint.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"

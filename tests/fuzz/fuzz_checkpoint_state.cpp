@@ -17,7 +17,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "io/Checkpoint.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"

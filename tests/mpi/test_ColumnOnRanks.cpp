@@ -17,7 +17,7 @@
 #include <string>
 #include <vector>
 
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "io/Checkpoint.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/GatherPoints.hpp"

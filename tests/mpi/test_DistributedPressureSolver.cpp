@@ -13,7 +13,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "parallel/CellNumbering.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/Decomposition.hpp"

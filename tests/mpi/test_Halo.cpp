@@ -8,7 +8,7 @@
 #include <string>
 #include <vector>
 
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "parallel/Communicator.hpp"
 #include "parallel/Decomposition.hpp"
 #include "parallel/Halo.hpp"

@@ -10,7 +10,7 @@
 #include <string>
 
 #include "FoamAvailability.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 
 namespace qs::test {
 

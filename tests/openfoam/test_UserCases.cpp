@@ -190,9 +190,18 @@ TEST(UserCases, AUserCaseWithRenamedPatchesProbesAndRASRunsCoupled) {
     double time = 0, p = 0;
     row >> time >> p;
     EXPECT_NEAR(time, s.final.time, 1e-4);  // the line's time sums the windows; the column's its steps
-    // to the .dat's 7 digits and the coupling's tolerance (the column's gate pressure carries the
-    // impedance term Z (Q - Q_window) of a converged window)
-    EXPECT_NEAR(c.liquid.density * p, s.final.gatePressure, 1e-5 * std::abs(s.final.gatePressure));
+    // to the .dat's 7 digits and the coupling's tolerance: the column's gate pressure carries the
+    // impedance term Z (Q - Q_window) of a converged window, |Q - Q_window| <= tolerance |Q|, with
+    // Z = rho c / A (solver/Simulation.cpp). Until 2026-12-07 this was 1e-5 of the pressure, which
+    // held at 1.19e-5 once the step was fitted to the window (the Aitken iterations stop elsewhere
+    // inside the tolerance): the bound is the coupling's, not a digit count
+    const double impedance = c.liquid.density * std::sqrt(c.liquid.bulkModulus / c.liquid.density) /
+                             c.grid.crossSectionArea;
+    const double bound = impedance * c.coupling.tolerance * std::abs(s.final.gateFlux) +
+                         5e-7 * std::abs(s.final.gatePressure);
+    EXPECT_NEAR(c.liquid.density * p, s.final.gatePressure, bound);
+    std::printf("outlet pressure against the gate's: %.3g Pa apart, bound %.3g Pa\n",
+                std::abs(c.liquid.density * p - s.final.gatePressure), bound);
     // the user's turbulence model ran
     EXPECT_NE(readFile(dir / "output/openfoam.log").find("kOmegaSST"), std::string::npos);
     std::printf("user's pipe case coupled: gate flux %.4g m3/s, gate pressure %.6g Pa = rho x %.8g from its "

@@ -7,11 +7,12 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "io/Checkpoint.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/Interruption.hpp"
 #include "solver/Run.hpp"
+#include "solver/RunSize.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -128,6 +129,48 @@ TEST(Resume, ResumedRunMatchesStraightRun) {
 
     // the series of the resumed run equals the straight one line by line
     expectSameLines(straightDir / "output/series.csv", splitDir / "output/series.csv");
+}
+
+// The step is fitted to the output interval (solver/TimeLattice.hpp), whose default is end / 100:
+// a resume asking for a later end (so another default interval) keeps the checkpoint's step and
+// ends where a straight run to that end with the first interval does, bit for bit; a resume whose
+// stable step differs (another Courant number) is refused, naming it.
+TEST(Resume, AResumeToALaterEndKeepsTheCheckpointsStep) {
+    RunOptions quiet;
+    quiet.quiet = true;
+    const fs::path straightDir = freshCopy("falling_head_forchheimer", "straight-later");
+    CaseConfig straight = loadCase(straightDir.string());
+    straight.time.end = 0.4;
+    straight.time.outputInterval = 0.003;  // the first run's default, 0.3 / 100
+    const RunSummary a = runCase(straight, quiet);
+
+    const fs::path splitDir = freshCopy("falling_head_forchheimer", "split-later");
+    CaseConfig first = loadCase(splitDir.string());
+    first.time.end = 0.3;
+    first.time.outputInterval = first.time.end / 100;
+    const RunSummary f = runCase(first, quiet);
+    CaseConfig later = first;
+    later.time.end = 0.4;
+    later.time.outputInterval = later.time.end / 100;  // as the default would be
+    ASSERT_NE(timeStep(later), f.dt) << "the later end must ask another step, or this tests nothing";
+    RunOptions resume = quiet;
+    resume.resume = true;
+    const RunSummary b = runCase(later, resume);
+    EXPECT_EQ(b.dt, f.dt);
+    EXPECT_EQ(a.dt, f.dt);
+    EXPECT_EQ(a.final.time, b.final.time);
+    EXPECT_EQ(a.final.reservoirHead, b.final.reservoirHead);
+    EXPECT_EQ(a.final.gateFlux, b.final.gateFlux);
+    EXPECT_EQ(a.final.liquidMass, b.final.liquidMass);
+
+    CaseConfig stiffer = later;
+    stiffer.time.courant *= 0.9;
+    try {
+        runCase(stiffer, resume);
+        ADD_FAILURE() << "a resume with another Courant number was accepted";
+    } catch (const Error& e) {
+        EXPECT_NE(std::string(e.what()).find("stable step"), std::string::npos) << e.what();
+    }
 }
 
 TEST(Resume, A2DRunWithPipesResumesWithTheSamePipesCsv) {

@@ -12,7 +12,7 @@
 #include <cstdlib>
 
 #include "StudyTestSupport.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "physics/ClosedForms.hpp"
 #include "physics/DriftFlux.hpp"
 

@@ -19,7 +19,7 @@
 #include <cstdio>
 #include <functional>
 
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "physics/ClosedForms.hpp"
 #include "physics/DriftFlux.hpp"
 #include "solver/Run.hpp"

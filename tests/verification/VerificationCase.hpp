@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "core/Constants.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "solver/Run.hpp"
 
 namespace qs::test {

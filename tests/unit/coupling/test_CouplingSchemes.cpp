@@ -7,7 +7,7 @@
 #include <cmath>
 
 #include "coupling/InertialTubeModel.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "solver/Run.hpp"
 
 using namespace qs;

@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/Error.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "parallel/Decomposition.hpp"
 #include "solver/RunSize.hpp"
 

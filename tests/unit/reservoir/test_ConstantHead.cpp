@@ -2,7 +2,7 @@
 #include "reservoir/ConstantHead.hpp"
 
 #include "core/Error.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 #include <gtest/gtest.h>
 

@@ -3,7 +3,7 @@
 #include "reservoir/LumpedReservoir.hpp"
 
 #include "core/Error.hpp"
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 #include "physics/ClosedForms.hpp"
 
 #include <gtest/gtest.h>

@@ -11,7 +11,7 @@
 #include <string>
 #include <vector>
 
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "io/Checkpoint.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"

@@ -5,7 +5,7 @@
 
 #include <cmath>
 
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"
 #include "solver/Parallel.hpp"

@@ -4,7 +4,7 @@
 #include <cstdio>
 
 #include "core/Error.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "solver/Run.hpp"
 
 using namespace qs;

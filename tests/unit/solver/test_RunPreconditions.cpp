@@ -7,7 +7,7 @@
 
 #include "app/CheckReport.hpp"
 #include "core/Error.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "solver/Run.hpp"
 #include "solver/RunPreconditions.hpp"
 

@@ -2,7 +2,7 @@
 #include <gtest/gtest.h>
 
 #include "core/Error.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "reservoir/ConstantHead.hpp"
 #include "solver/DoublePointSolver.hpp"
 #include "solver/RunSize.hpp"

@@ -16,7 +16,7 @@
 #include <utility>
 #include <vector>
 
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "io/Checkpoint.hpp"
 #include "physics/ClosedForms.hpp"
 #include "reservoir/ReservoirModel.hpp"

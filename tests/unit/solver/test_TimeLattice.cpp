@@ -5,7 +5,7 @@
 #include <cstdio>
 #include <vector>
 
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "solver/Run.hpp"
 #include "solver/RunSize.hpp"
 #include "solver/TimeLattice.hpp"
@@ -34,6 +34,7 @@ TEST(TimeLattice, PartsOfAtMostTakeTheLeastWholeNumber) {
     EXPECT_EQ(partsOfAtMost(0.3, 0.1), 3);      // 2.9999999999999996
     EXPECT_EQ(partsOfAtMost(0.5, 1.0), 1);      // a bound beyond the span: one part
     EXPECT_THROW(partsOfAtMost(0.0, 1.0), Error);
+    EXPECT_EQ(partsOfAtMost(1.0, 1e-38), kMostParts);  // saturates (a fuzzed 1e70 Pa water)
 }
 
 TEST(TimeLattice, TheStepIsTheLargestBelowTheStableOneThatFillsTheOutputInterval) {

@@ -1,13 +1,13 @@
-// Tests of io/TomlSection on its own, with a made-up format (no quicksand key): typed look-ups and
+// Tests of case/TomlSection on its own, with a made-up format (no quicksand key): typed look-ups and
 // their messages, the unknown-key check, and where KeyLocations places a problem.
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "core/Error.hpp"
-#include "io/DidYouMean.hpp"
-#include "io/KeyLocations.hpp"
-#include "io/TomlSection.hpp"
+#include "case/DidYouMean.hpp"
+#include "case/KeyLocations.hpp"
+#include "case/TomlSection.hpp"
 
 namespace qs {
 namespace {

@@ -1,4 +1,4 @@
-// Tests of io/CaseLoader: defaults of a minimal case, and one test per class of input error
+// Tests of case/CaseLoader: defaults of a minimal case, and one test per class of input error
 // (each checks that the message names the file, the line and the full dotted key).
 #include <gtest/gtest.h>
 
@@ -9,7 +9,7 @@
 #include <string>
 
 #include "core/Error.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 
 namespace qs {
 namespace {

@@ -1,7 +1,7 @@
 #pragma once
 // KeyLocations: where each table and key of an input file was written. The reader records them
-// as it goes (io/TomlSection); they outlive the parsed file, so that a rule checked on the values
-// afterwards (io/CaseRules) reports its problem at the same file, line and dotted key as a check
+// as it goes (case/TomlSection); they outlive the parsed file, so that a rule checked on the values
+// afterwards (case/CaseRules) reports its problem at the same file, line and dotted key as a check
 // made while reading would.
 //
 //   const KeyLocations::Table column = where.table("column");

@@ -1,12 +1,12 @@
-// Tests of io/CaseRules on a CaseConfig built in code: the rules between keys need only the
+// Tests of case/CaseRules on a CaseConfig built in code: the rules between keys need only the
 // loaded values and where the keys were written (test_CaseLoader checks them through the file).
 #include <gtest/gtest.h>
 
 #include <string>
 
 #include "core/Error.hpp"
-#include "io/CaseRules.hpp"
-#include "io/KeyLocations.hpp"
+#include "case/CaseRules.hpp"
+#include "case/KeyLocations.hpp"
 
 namespace qs {
 namespace {

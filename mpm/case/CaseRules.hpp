@@ -1,6 +1,6 @@
 #pragma once
 // CaseRules: the physics rules that relate several keys of a case, checked on the loaded
-// CaseConfig once the schema (io/CaseLoader.cpp) has read the keys concerned and checked each on
+// CaseConfig once the schema (case/CaseLoader.cpp) has read the keys concerned and checked each on
 // its own (type, range, whether it applies with the choices made elsewhere). Two groups:
 //  - the geometry: the grid's width, every layer, the chamber and the grid's top are whole
 //    numbers of cells, the chamber at least one; the water starts at or above the sand top, the
@@ -19,8 +19,8 @@
 // pressure gate; [coupling] only with OpenFOAM), bounds that one key sets for another's range
 // (dilatancy_angle <= friction_angle, a monitor within column.top, a zone within grid.width),
 // unique monitor names (the message quotes the line of the first) and names of materials.
-#include "io/CaseConfig.hpp"
-#include "io/KeyLocations.hpp"
+#include "case/CaseConfig.hpp"
+#include "case/KeyLocations.hpp"
 
 namespace qs {
 

@@ -1,12 +1,12 @@
 #pragma once
-// Applying command-line overrides (io/CaseOverride.hpp) to a parsed case file, and writing the
+// Applying command-line overrides (case/CaseOverride.hpp) to a parsed case file, and writing the
 // case as run. Seen only by the schema (CaseLoader.cpp), like everything that includes toml++.
 #include <toml++/toml.h>
 
 #include <string>
 #include <vector>
 
-#include "io/CaseOverride.hpp"
+#include "case/CaseOverride.hpp"
 
 namespace qs {
 

@@ -1,5 +1,5 @@
 #pragma once
-// Reading TOML with checks: the toolkit under the case schema (io/CaseLoader.cpp). It knows TOML
+// Reading TOML with checks: the toolkit under the case schema (case/CaseLoader.cpp). It knows TOML
 // and how to report a problem in it, and nothing of quicksand's keys:
 //  - TableKeys: the keys one table accepts. Any other key is an error that suggests the nearest
 //    accepted key ("Did you mean 'porosity'?") or names the table where it belongs.
@@ -8,7 +8,7 @@
 //    naming the file, the line of the offending value (for a missing key, the line of its table),
 //    the full dotted key, the value found and what is expected.
 //  - Every table and key a Section meets is recorded in a KeyLocations, so that rules checked on
-//    the values after reading (io/CaseRules) place their messages the same way.
+//    the values after reading (case/CaseRules) place their messages the same way.
 //
 //   KeyLocations where("case.toml");
 //   const Section root(parsedFile, kRootKeys, kAllTables, where);
@@ -26,9 +26,9 @@
 #include <utility>
 #include <vector>
 
-#include "io/KeyLocations.hpp"
-#include "io/MessageText.hpp"
-#include "io/Range.hpp"
+#include "case/KeyLocations.hpp"
+#include "case/MessageText.hpp"
+#include "case/Range.hpp"
 
 namespace qs {
 

@@ -1,4 +1,4 @@
-#include "io/MessageText.hpp"
+#include "case/MessageText.hpp"
 
 #include <sstream>
 

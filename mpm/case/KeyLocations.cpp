@@ -1,4 +1,4 @@
-#include "io/KeyLocations.hpp"
+#include "case/KeyLocations.hpp"
 
 #include "core/Error.hpp"
 

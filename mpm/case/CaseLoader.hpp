@@ -9,9 +9,9 @@
 // own: its type, its range, whether it applies with the choices made elsewhere; the keys, units,
 // defaults and ranges are those of docs/case-format.md, and the accepted keys of each table are
 // declared once there and drive the unknown-key check ("Did you mean ..."). The rules that relate
-// several keys (io/CaseRules.hpp: whole cells, levels, porosity bounds, ...) are checked on the
+// several keys (case/CaseRules.hpp: whole cells, levels, porosity bounds, ...) are checked on the
 // loaded values, once the keys they relate are read. The TOML toolkit under the schema is
-// io/TomlSection.hpp; only these files see TOML (toml++).
+// case/TomlSection.hpp; only these files see TOML (toml++).
 //
 // Every problem is reported as qs::InputError naming the file, the line of the offending node
 // (for a missing key, the line of the table that should hold it), the full dotted key
@@ -20,7 +20,7 @@
 #include <string>
 #include <vector>
 
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 namespace qs {
 
@@ -28,7 +28,7 @@ namespace qs {
 /// naming file, line, full dotted key (e.g. "materials.sand.porosity") and expected value.
 /// config.caseDirectory is set to `caseDirectory` as given.
 /// With `overrides` (--set KEY=VALUE) applied to the file before validation: an override is
-/// checked exactly like the key in the file, and an error it causes names it (io/CaseOverride.hpp).
+/// checked exactly like the key in the file, and an error it causes names it (case/CaseOverride.hpp).
 CaseConfig loadCase(const std::string& caseDirectory, const std::vector<CaseOverride>& overrides = {});
 
 /// Same, from a TOML string (for tests); `fileName` is used in messages. Relative paths in the

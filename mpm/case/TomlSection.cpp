@@ -1,11 +1,11 @@
-#include "io/TomlSection.hpp"
+#include "case/TomlSection.hpp"
 
 #include <cmath>
 #include <limits>
 #include <sstream>
 
 #include "core/Error.hpp"
-#include "io/DidYouMean.hpp"
+#include "case/DidYouMean.hpp"
 
 namespace qs {
 

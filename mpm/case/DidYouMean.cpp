@@ -1,4 +1,4 @@
-#include "io/DidYouMean.hpp"
+#include "case/DidYouMean.hpp"
 
 #include <algorithm>
 #include <cctype>

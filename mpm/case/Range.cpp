@@ -1,9 +1,9 @@
-#include "io/Range.hpp"
+#include "case/Range.hpp"
 
 #include <cmath>
 #include <utility>
 
-#include "io/MessageText.hpp"
+#include "case/MessageText.hpp"
 
 namespace qs {
 

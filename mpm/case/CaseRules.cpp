@@ -1,11 +1,11 @@
-#include "io/CaseRules.hpp"
+#include "case/CaseRules.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <string>
 #include <string_view>
 
-#include "io/MessageText.hpp"
+#include "case/MessageText.hpp"
 
 namespace qs {
 

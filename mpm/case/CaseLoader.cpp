@@ -1,8 +1,8 @@
 // The case format: the tables and keys of case.toml, and how each is read into CaseConfig. This
 // file is the schema, docs/case-format.md in code: it reads each key on its own (its type, its
-// range, whether it applies with the choices made elsewhere) with the toolkit of io/TomlSection.
-// The rules that relate the values of several keys are io/CaseRules, checked on the CaseConfig.
-#include "io/CaseLoader.hpp"
+// range, whether it applies with the choices made elsewhere) with the toolkit of case/TomlSection.
+// The rules that relate the values of several keys are case/CaseRules, checked on the CaseConfig.
+#include "case/CaseLoader.hpp"
 
 #include <toml++/toml.h>
 
@@ -20,13 +20,13 @@
 #include "core/Constants.hpp"
 #include "core/Error.hpp"
 #include "core/PiecewiseLinear.hpp"
-#include "io/CaseOverrides.hpp"
-#include "io/CaseRules.hpp"
-#include "io/DidYouMean.hpp"
-#include "io/KeyLocations.hpp"
-#include "io/MessageText.hpp"
-#include "io/Range.hpp"
-#include "io/TomlSection.hpp"
+#include "case/CaseOverrides.hpp"
+#include "case/CaseRules.hpp"
+#include "case/DidYouMean.hpp"
+#include "case/KeyLocations.hpp"
+#include "case/MessageText.hpp"
+#include "case/Range.hpp"
+#include "case/TomlSection.hpp"
 
 namespace qs {
 namespace {
@@ -215,7 +215,7 @@ std::vector<std::pair<double, double>> optionalRows(const Section& s, std::strin
 // Loader: one function per section, in the order of docs/case-format.md. Each reads its keys on
 // their own; a bound one key sets for another's range (dilatancy_angle <= friction_angle, a
 // monitor below column.top) is part of that range. The rules between the values of several keys
-// (io/CaseRules) are checked once the keys they relate are read.
+// (case/CaseRules) are checked once the keys they relate are read.
 // ------------------------------------------------------------------------------------------------
 
 class Loader {

@@ -1,5 +1,5 @@
-// Command-line overrides of a case's keys (io/CaseOverride.hpp, io/CaseOverrides.hpp).
-#include "io/CaseOverrides.hpp"
+// Command-line overrides of a case's keys (case/CaseOverride.hpp, case/CaseOverrides.hpp).
+#include "case/CaseOverrides.hpp"
 
 #include <algorithm>
 #include <cctype>

@@ -1,7 +1,7 @@
 #pragma once
 // CaseConfig: the validated content of a case directory's case.toml, as a plain struct.
 //
-// Only io/CaseLoader (with its toolkit, io/TomlSection) reads TOML; everything else sees this
+// Only case/CaseLoader (with its toolkit, case/TomlSection) reads TOML; everything else sees this
 // struct (the solver never reads a key by name). Every field is SI; the key it comes from, its
 // unit, default and allowed range are documented in docs/case-format.md, which follows the order
 // of this file.
@@ -21,31 +21,10 @@
 #include <utility>
 #include <vector>
 
-#include "io/CaseOverride.hpp"
+#include "case/CaseOverride.hpp"
+#include "core/ModelChoices.hpp"
 
 namespace qs {
-
-enum class ShapeFunctionKind { Linear, Gimp };
-/// plane: 2D plane strain (or 1D, 3D); axisymmetric: 2D (r, z), the column a cylinder of radius width
-enum class GridGeometry { Plane, Axisymmetric };
-enum class PermeabilityMode { Constant, KozenyCarman, KozenyCarmanScaled };
-enum class ConstitutiveModelKind { LinearElastic, MohrCoulomb };
-enum class InitialStress { K0, Zero };
-enum class InitialState { Solid, Fluidised };
-enum class GateMode { Pressure, Flux, Closed };
-/// How a step advances the nodes' velocities and the pore pressure (solver/TimeIntegrator.hpp):
-/// all explicit, bounded by the water's compression wave, or with the pressure implicit
-/// (a projection), bounded by the skeleton's wave only.
-enum class TimeScheme { Explicit, SemiImplicit };
-/// The semi-implicit step's linear solver (solver/PressureSystem.hpp): the direct one up to
-/// 20 000 cells and conjugate gradients beyond (Automatic), or either always.
-enum class PressureSolver { Automatic, Direct, ConjugateGradient };
-/// What sand reaching the overflow level does: leaves with the water, or stops the run.
-enum class SandOverflow { Carry, Stop };
-enum class ReservoirKind { ConstantHead, Lumped, OpenFoam };
-enum class CouplingKind { Explicit, Implicit };
-/// The lumped tube's wall friction: Hagen-Poiseuille only, or a smooth pipe in every regime.
-enum class TubeFriction { SmoothPipe, Laminar };
 
 struct GridConfig {
     int dimension = 1;                 ///< 1, 2 or 3 (only 1 is verified)

@@ -1,4 +1,4 @@
-#include "io/CaseConfig.hpp"
+#include "case/CaseConfig.hpp"
 
 #include <sstream>
 

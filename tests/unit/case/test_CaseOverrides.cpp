@@ -1,4 +1,4 @@
-// Tests of the command line's overrides (io/CaseOverride.hpp): --set KEY=VALUE changes one key of
+// Tests of the command line's overrides (case/CaseOverride.hpp): --set KEY=VALUE changes one key of
 // case.toml for a run, validated exactly like the key in the file, and the run records the case
 // as run. Which keys are reachable: every key of a table (time.end), of a named table
 // (materials.sand.porosity), of an inline table (materials.sand.permeability.value), of an
@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "core/Error.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 
 namespace qs {
 namespace {
