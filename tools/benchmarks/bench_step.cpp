@@ -24,7 +24,7 @@
 #include <vector>
 
 #include "core/ForAll.hpp"
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"
 

@@ -5,7 +5,7 @@
 //       -L/usr/lib/x86_64-linux-gnu/hdf5/serial -lhdf5 -lz -o /tmp/profile3d
 //   OMP_NUM_THREADS=1 valgrind --tool=callgrind /tmp/profile3d 10; callgrind_annotate callgrind.out.*
 // (run from the repository root)
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"
 #include <cstdlib>

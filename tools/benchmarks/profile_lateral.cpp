@@ -8,7 +8,7 @@
 //       -L/usr/lib/x86_64-linux-gnu/hdf5/serial -lhdf5 -lz -o /tmp/profile2d
 //   OMP_NUM_THREADS=1 valgrind --tool=callgrind /tmp/profile2d 500 20; callgrind_annotate --inclusive=yes callgrind.out.*
 // (run from the repository root; arguments: columns, steps)
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"
 #include <cstdlib>

@@ -4,7 +4,7 @@
 //       tools/benchmarks/profile_step.cpp build/mpm/libquicksand_mpm.a -ltomlplusplus \
 //       -L/usr/lib/x86_64-linux-gnu/hdf5/serial -lhdf5 -o /tmp/profile_step
 //   OMP_NUM_THREADS=1 valgrind --tool=callgrind /tmp/profile_step; callgrind_annotate callgrind.out.*
-#include "io/CaseLoader.hpp"
+#include "case/CaseLoader.hpp"
 #include "reservoir/ReservoirModel.hpp"
 #include "solver/DoublePointSolver.hpp"
 using namespace qs;
