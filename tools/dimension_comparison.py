@@ -31,14 +31,14 @@ import sys
 import time
 import tomllib
 
+import quicksand as qs
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.dirname(HERE)
 
 
 def read_series(path):
-    with open(path) as f:
-        rows = list(csv.DictReader(f))
-    return {k: [float(r[k]) for r in rows] for k in rows[0]}
+    return {k: list(v) for k, v in qs.arrays(qs.read_series(path)).items()}
 
 
 def variant(text, config, geometry, across, end):

@@ -22,7 +22,6 @@ Usage:
 Needs Debian's python3-matplotlib, python3-numpy and python3-h5py (tools/setup.sh installs them).
 """
 import argparse
-import csv
 import os
 import sys
 
@@ -33,16 +32,15 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from hydraulics import analytic_lines  # noqa: E402
+from hydraulics import analytic_lines  # noqa: E402  (tools/, the script's own folder)
+import quicksand as qs  # noqa: E402
 
 
 def read_series(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
+    s = qs.read_series(path)
+    if s.empty:
         sys.exit(f"plot_fluidisation.py: {path} has no rows")
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+    return qs.arrays(s)
 
 
 def read_space_time(path, cell):

@@ -14,8 +14,6 @@ The shebang is /usr/bin/python3 on purpose: Debian's python3-matplotlib and nump
 not in the pyenv python3 that may come first on PATH.
 """
 import argparse
-import csv
-import math
 import os
 import sys
 
@@ -23,29 +21,13 @@ import matplotlib
 
 matplotlib.use("Agg")  # files only: no display on build machines or CI
 import matplotlib.pyplot as plt  # noqa: E402  (must follow the backend choice)
-import numpy as np  # noqa: E402
+
+from quicksand.results import arrays, read_series as qs_read_series  # noqa: E402
 
 
 def read_series(path):
-    """Returns {column: float array}; cells that are not numbers become NaN, short lines are
-    skipped (a running or crashed simulation may leave half a line)."""
-    with open(path, newline="") as f:
-        rows = list(csv.reader(f))
-    if not rows:
-        raise ValueError(f"{path}: empty file (no header line)")
-    header = [name.strip() for name in rows[0]]
-    body = [r for r in rows[1:] if len(r) == len(header)]
-
-    def number(text):
-        try:
-            return float(text)
-        except ValueError:
-            return math.nan
-
-    columns = {}
-    for i, name in enumerate(header):
-        columns[name] = np.array([number(r[i]) for r in body], dtype=float)
-    return columns
+    """Returns {column: float array} (quicksand.results: short lines dropped, words as NaN)."""
+    return arrays(qs_read_series(path))
 
 
 def note_missing(ax, what):

@@ -3,7 +3,8 @@
 #
 #   bash tools/setup.sh              compiler, CMake, Eigen, HDF5, toml++, GoogleTest/Mock,
 #                                    Google Benchmark, hypre (its AMG is benchmarked against the
-#                                    pressure solvers), Python plotting
+#                                    pressure solvers), Python (numpy, pandas, h5py, matplotlib,
+#                                    pytest) and the quicksand Python package in .venv
 #   bash tools/setup.sh --fuzz       the same plus clang with libFuzzer and OpenMP (tests/fuzz)
 #   bash tools/setup.sh --mpi        the same plus Debian's Open MPI (libopenmpi-dev, mpirun): the
 #                                    build runs on MPI ranks and the mpi tests run
@@ -18,11 +19,11 @@
 # Uses sudo only when not run as root.
 set -euo pipefail
 
-usage() { sed -n '2,17p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 packages=(cmake g++ make pkg-config libeigen3-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev liblapack-dev
           libgtest-dev libgmock-dev libbenchmark-dev libhypre-dev
-          python3-matplotlib python3-numpy python3-h5py)
+          python3-matplotlib python3-numpy python3-h5py python3-pandas python3-pytest python3-venv python3-setuptools python3-wheel)
 with_openfoam=false
 for arg in "$@"; do
     case "$arg" in
@@ -182,3 +183,22 @@ else
 fi
 
 if $with_openfoam; then setup_openfoam_headers; fi
+
+# The Python package (tools/quicksand: results, runs, studies) for whatever python3 the user
+# runs: a virtual environment .venv at the repository's root, made from Debian's python3 and
+# seeing its packages (numpy, pandas, h5py, matplotlib, pytest), with the package installed
+# editable from tools/. Nothing is downloaded (--no-index, --no-deps, no build isolation).
+# `source .venv/bin/activate`, or .venv/bin/python, then `import quicksand`.
+setup_python_package() {
+    local root venv
+    root="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
+    venv="$root/.venv"
+    if [[ ! -x "$venv/bin/python" ]]; then
+        /usr/bin/python3 -m venv --system-site-packages "$venv"
+    fi
+    if ! "$venv/bin/python" -c 'import quicksand' 2>/dev/null; then
+        "$venv/bin/python" -m pip install --quiet --no-deps --no-build-isolation --no-index --editable "$root/tools"
+        echo "setup.sh: the quicksand Python package installed in $venv (source $venv/bin/activate)"
+    fi
+}
+setup_python_package

@@ -17,13 +17,14 @@ series.csv has 9 digits) and series.csv it checks:
 Exits non-zero, saying which, if any check fails.
 """
 import argparse
-import csv
 import os
 import re
 import shutil
 import subprocess
 import sys
 import time
+
+import quicksand as qs
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
@@ -45,26 +46,22 @@ def main():
     ap.add_argument("--steps", type=int, default=1_000_000)
     ap.add_argument("--work", default="/tmp/quicksand-soak")
     a = ap.parse_args()
-    quicksand = os.path.join(a.build, "mpm", "quicksand")
-    if not os.access(quicksand, os.X_OK):
-        sys.exit(f"soak.py: {quicksand} is not built (bash tools/build.sh)")
+    try:
+        quicksand = qs.find_quicksand(os.path.join(a.build, "mpm", "quicksand"))
+    except qs.QuicksandError as e:
+        sys.exit(f"soak.py: {e} (bash tools/build.sh)")
 
     shutil.rmtree(a.work, ignore_errors=True)
     shutil.copytree(os.path.join(ROOT, "cases", "verification", "bed_expansion"), a.work)
-    case = os.path.join(a.work, "case.toml")
-    text = open(case).read()
-    check = subprocess.run([quicksand, "check", a.work], capture_output=True, text=True, check=True).stdout
-    dt = float(re.search(r"dt = courant h / c_fast = ([0-9.e+-]+) s", check).group(1))
+    check = qs.check(a.work, binary=quicksand)
+    dt = float(re.search(r"fitted to dt = ([0-9.e+-]+) s", check).group(1))
     end = a.steps * dt
-    text = re.sub(r"^output_interval = [0-9.]+.*$", f"output_interval = {end / 200:.6f}", text, flags=re.M)
-    open(case, "w").write(text)
 
     def run(extra, end_time):
-        t = re.sub(r"^end = [0-9.]+.*$", f"end = {end_time:.6f}", text, flags=re.M)
-        open(case, "w").write(t)
         start = time.time()
-        proc = subprocess.Popen([quicksand, "run", a.work, "--quiet"] + extra, stdout=subprocess.DEVNULL,
-                                stderr=subprocess.PIPE)
+        overrides = {"time.end": end_time, "time.output_interval": end / 200}
+        proc = subprocess.Popen([quicksand, "run", a.work, "--quiet", *qs.set_arguments(overrides)] + extra,
+                                stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
         samples = []
         while proc.poll() is None:
             r = rss_kib(proc.pid)
@@ -93,7 +90,7 @@ def main():
                                                (second["outflow"] - first["outflow"]))
     liquid_drift = abs(second["liquid"] / liquid_expected - 1)
 
-    rows = list(csv.DictReader(open(os.path.join(a.work, "output", "series.csv"))))
+    rows = qs.read_series(os.path.join(a.work, "output")).to_dict("records")
     f = lambda r, k: float(r[k])
     first_row, last = rows[0], rows[-1]
     inflow = max(abs(f(last, "cumulative_inflow")), 1e-30)

@@ -56,6 +56,10 @@ try:
     import tomllib
 except ModuleNotFoundError:  # Python < 3.11
     sys.exit("study.py: needs Python 3.11 or later (tomllib); Debian bookworm's python3 is 3.11")
+try:  # the package's readers need numpy and pandas: say so now, not after the runs
+    import quicksand  # noqa: F401  (tools/quicksand, beside this script)
+except ImportError as e:
+    sys.exit(f"study.py: {e}")
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 STUDY_KEYS = ["base", "combine", "parameters", "set", "parallel", "threads", "progress_interval", "quicksand"]

@@ -41,6 +41,8 @@ except ModuleNotFoundError:
 
 import numpy as np
 
+import quicksand as qs
+
 FIGURES = ["onset_time_s", "onset_gradient", "peak_gate_flux_m3s", "peak_filter_velocity_ms",
            "initial_bed_height_m", "peak_bed_height_m", "peak_expansion", "final_bed_height_m",
            "fluidised_duration_s", "resettle_time_s", "resettled_height_m", "sand_carried_out_kg",
@@ -50,11 +52,8 @@ FIGURES = ["onset_time_s", "onset_gradient", "peak_gate_flux_m3s", "peak_filter_
 
 
 def read_series(path):
-    with open(path, newline="") as f:
-        rows = list(csv.DictReader(f))
-    if not rows:
-        return {}
-    return {k: np.array([float(r[k]) for r in rows]) for k in rows[0]}
+    s = qs.read_series(path)
+    return {} if s.empty else qs.arrays(s)
 
 
 def read_case(output_dir):
@@ -144,8 +143,7 @@ def pipe_figures(output_dir, s):
     path = os.path.join(output_dir, "pipes.csv")
     if not os.path.isfile(path):
         return {}
-    with open(path, newline="") as f:
-        rows = [{k: float(v) for k, v in r.items()} for r in csv.DictReader(f)]
+    rows = qs.read_pipes(path).to_dict("records")
     main = {}  # time -> the line of its main pipe (pipe 1), or of no pipe
     for r in rows:
         if r["pipe"] <= 1:

@@ -4,8 +4,9 @@
 #   bash tools/test.sh                  every test
 #   bash tools/test.sh -L verification  extra arguments go to ctest (here: one label only)
 #
-# Without arguments it then builds a second tree with AddressSanitizer and UBSan (build-sanitize)
-# and runs the fast labels (unit, hostile, resume, cli) there too (QUICKSAND_SANITIZE=0 skips it),
+# Without arguments it then runs the Python package's tests (pytest, tools/tests), builds a second
+# tree with AddressSanitizer and UBSan (build-sanitize) and runs the fast labels (unit, hostile,
+# resume, cli) there too (QUICKSAND_SANITIZE=0 skips it),
 # and a third with clang and libFuzzer (build-fuzz) whose three fuzzers run 40 s each
 # (tests/fuzz; QUICKSAND_FUZZ=0 skips it, QUICKSAND_FUZZ_SECONDS sets the time).
 #
@@ -62,6 +63,18 @@ fuzz_stage() {
     return "${PIPESTATUS[0]}"
 }
 
+# The Python package's tests (tools/tests: the readers on outputs this build writes, the runner)
+# under pytest, in the virtual environment setup.sh made (tools/setup.sh: .venv), with this
+# build's quicksand
+python_stage() {
+    QUICKSAND="$build_dir/mpm/quicksand" .venv/bin/python -m pytest -q -p no:cacheprovider tools/tests 2>&1 \
+        | tail -n 30 | grep -E '(passed|failed|error|Error|FAILED)' | sed 's/^/pytest: /'
+    return "${PIPESTATUS[0]}"
+}
+
+if [[ $# -eq 0 ]]; then
+    if ! python_stage; then echo "test.sh: the Python package's tests failed" >&2; rc=1; fi
+fi
 if [[ $# -eq 0 && "${QUICKSAND_SANITIZE:-1}" != 0 ]]; then
     if ! sanitizer_stage; then echo "test.sh: the sanitizer stage failed" >&2; rc=1; fi
 fi

@@ -1,0 +1,139 @@
+"""The files a quicksand run writes, each read once, into pandas tables with their units.
+
+    series = read_series("CASE/output")      # series.csv
+    series.attrs["units"]["gate_flux"]       # 'm3/s'
+    pipes = read_pipes("CASE/output")        # pipes.csv (2D and 3D runs)
+    fields = read_fields("CASE/output")      # fields.h5: fields.times, fields.step(k)["solid"]["porosity"]
+
+Units are those of docs/case-format.md ("series.csv", "pipes.csv") and docs/studies.md ("study.csv");
+tools/tests/test_results.py checks that the tables here and there agree. A file that a running or
+crashed simulation is still writing may end in half a line: short lines are dropped, and cells
+that are not numbers become NaN (study.csv keeps its text columns).
+"""
+import csv
+import os
+import re
+
+import numpy as np
+import pandas as pd
+
+# docs/case-format.md, "series.csv" and "pipes.csv"
+SERIES_UNITS = {
+    "time": "s", "gate_flux": "m3/s", "gate_pressure": "Pa", "reservoir_head": "m", "sand_surface": "m",
+    "bed_height": "m", "fluidised_front": "m", "fluidised_share": "-", "water_surface": "m", "gradient": "-",
+    "cumulative_inflow": "m3", "cumulative_outflow": "m3", "injected_volume": "m3", "ledger_residual": "m3",
+    "solid_mass": "kg", "liquid_mass": "kg", "solid_points": "-", "liquid_points": "-",
+    "cumulative_solid_outflow": "kg",
+}
+MONITOR_UNIT = "m/s"  # q_NAME: the filter velocity at monitor NAME
+PIPES_UNITS = {
+    "time": "s", "pipes": "-", "fluidised_flux_share": "-", "pipe": "-", "x": "m", "y": "m", "width": "m",
+    "height": "m", "wall": "-", "flux_share": "-", "cells": "-",
+}
+# docs/studies.md, "study.csv": a figure's unit is its name's suffix
+STUDY_SUFFIX_UNITS = {"_s": "s", "_m": "m", "_kg": "kg", "_m3s": "m3/s", "_ms": "m/s"}
+FRONT_FIT_UNITS = {"speed": "m/s", "intercept": "m", "r2": "-"}
+UNITS = {"series.csv": SERIES_UNITS, "pipes.csv": PIPES_UNITS, "front_fit.csv": FRONT_FIT_UNITS}
+
+
+def _file(path, name):
+    """`path` itself, or `name` inside it when it is a directory (a run's output directory)."""
+    return os.path.join(path, name) if os.path.isdir(path) else path
+
+
+def _unit_of_series_column(name):
+    if name in SERIES_UNITS:
+        return SERIES_UNITS[name]
+    return MONITOR_UNIT if name.startswith("q_") else "?"
+
+
+def _unit_of_study_column(name):
+    for suffix, unit in STUDY_SUFFIX_UNITS.items():
+        if name.endswith(suffix):
+            return unit
+    return "-"
+
+
+def read_table(path, unit_of=lambda name: "?", text_columns=()):
+    """A CSV file with a header line as a DataFrame: numbers as floats (NaN where a cell is not
+    one), `text_columns` kept as text, lines shorter or longer than the header dropped.
+    DataFrame.attrs["units"] maps each column to unit_of(column); attrs["path"] is the file."""
+    with open(path, newline="") as f:
+        rows = list(csv.reader(f))
+    if not rows:
+        raise ValueError(f"{path}: empty file (no header line)")
+    header = [name.strip() for name in rows[0]]
+    body = [r for r in rows[1:] if len(r) == len(header)]
+    frame = pd.DataFrame(body, columns=header)
+    for name in header:
+        if name not in text_columns:
+            frame[name] = pd.to_numeric(frame[name], errors="coerce").astype(float)
+    frame.attrs["units"] = {name: unit_of(name) for name in header}
+    frame.attrs["path"] = os.path.abspath(path)
+    return frame
+
+
+def arrays(frame):
+    """A table as {column: numpy array}, for code written against plain arrays."""
+    return {name: frame[name].to_numpy() for name in frame.columns}
+
+
+def read_series(path):
+    """series.csv of a run (its output directory, or the file): one row per output time."""
+    return read_table(_file(path, "series.csv"), _unit_of_series_column)
+
+
+def read_pipes(path):
+    """pipes.csv of a 2D or 3D run: one row per pipe and output time (pipe 0: none then)."""
+    return read_table(_file(path, "pipes.csv"), lambda name: PIPES_UNITS.get(name, "?"))
+
+
+def read_study(path):
+    """study.csv of a study (its directory, or the file): one row per variant."""
+    return read_table(_file(path, "study.csv"), _unit_of_study_column, text_columns=("variant", "status", "error"))
+
+
+def read_front_fit(path):
+    """front_fit.csv (tools/plot_fluidisation.py): the fluidised front's linear fit."""
+    return read_table(_file(path, "front_fit.csv"), lambda name: FRONT_FIT_UNITS.get(name, "-"),
+                      text_columns=("window",))
+
+
+class Fields:
+    """fields.h5 of a run: per output, the point sets (solid, liquid, and cells in 2D and 3D), each
+    field an array (positions N x 3 as x y z, stresses N x 6 as xx yy zz yz xz xy)."""
+
+    def __init__(self, path):
+        import h5py  # only readers of fields need it
+
+        self.path = _file(path, "fields.h5")
+        self._h5py = h5py
+        with h5py.File(self.path, "r") as h:
+            self.dimension = int(h.attrs.get("dimension", 0))
+            build = h.attrs.get("quicksand", b"")
+            self.quicksand = build.decode() if isinstance(build, bytes) else str(build)
+            self._steps = sorted(k for k in h.keys() if re.fullmatch(r"step_\d+", k))
+            self.times = np.array([float(h[k].attrs["time"]) for k in self._steps])
+
+    def __len__(self):
+        return len(self._steps)
+
+    def step(self, k):
+        """Output k (negative counts from the last) as {set: {field: array}}, with "time"."""
+        name = self._steps[k]
+        out = {}
+        with self._h5py.File(self.path, "r") as h:
+            g = h[name]
+            out["time"] = float(g.attrs["time"])
+            for point_set in g.keys():
+                out[point_set] = {field: g[point_set][field][()] for field in g[point_set].keys()}
+        return out
+
+    def at(self, time):
+        """The output nearest `time` (s)."""
+        return self.step(int(np.argmin(np.abs(self.times - time))))
+
+
+def read_fields(path):
+    """fields.h5 of a run (its output directory, or the file)."""
+    return Fields(path)
