@@ -30,6 +30,8 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
+import quicksand as qs  # noqa: E402
+
 
 def number(text):
     try:
@@ -43,23 +45,22 @@ def read_runs(output_dir):
     if not os.path.isfile(path):
         sys.exit(f"piping_ensemble.py: no {path} (run tools/study.py on the study first)")
     runs = []
-    with open(path, newline="") as f:
-        for row in csv.DictReader(f):
-            if row.get("status") != "finished":
-                continue
-            case_file = os.path.join(output_dir, row["variant"], "case.effective.toml")
-            with open(case_file, "rb") as c:
-                case = tomllib.load(c)
-            field = case.get("initial", {}).get("porosity_field", {})
-            runs.append({"sigma": float(field.get("standard_deviation", 0.0)),
-                         "length": float(field.get("correlation_length", 0.0)),
-                         "seed": int(field.get("seed", 1)),
-                         "head": float(case.get("reservoir", {}).get("head", float("nan"))),
-                         "gradient": number(row.get("first_pipe_gradient")),
-                         "time": number(row.get("first_pipe_time_s")),
-                         "wall": number(row.get("first_pipe_wall")),
-                         "wall_share": number(row.get("wall_pipe_share")),
-                         "flux_share": number(row.get("max_pipe_flux_share"))})
+    for row in qs.read_study(path).to_dict("records"):
+        if row.get("status") != "finished":
+            continue
+        case_file = os.path.join(output_dir, row["variant"], "case.effective.toml")
+        with open(case_file, "rb") as c:
+            case = tomllib.load(c)
+        field = case.get("initial", {}).get("porosity_field", {})
+        runs.append({"sigma": float(field.get("standard_deviation", 0.0)),
+                     "length": float(field.get("correlation_length", 0.0)),
+                     "seed": int(field.get("seed", 1)),
+                     "head": float(case.get("reservoir", {}).get("head", float("nan"))),
+                     "gradient": number(row.get("first_pipe_gradient")),
+                     "time": number(row.get("first_pipe_time_s")),
+                     "wall": number(row.get("first_pipe_wall")),
+                     "wall_share": number(row.get("wall_pipe_share")),
+                     "flux_share": number(row.get("max_pipe_flux_share"))})
     return runs
 
 

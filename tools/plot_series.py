@@ -1,127 +1,15 @@
-#!/usr/bin/python3
-"""Plot a quicksand run's time series: OUTPUT_DIR/series.csv -> OUTPUT_DIR/series.png.
+#!/usr/bin/env python3
+"""Plot a quicksand run's time series: OUTPUT_DIR/series.csv -> OUTPUT_DIR/series.png
+(quicksand.plots.series).
 
-Usage:
-    tools/plot_series.py OUTPUT_DIR [--out FILE.png]
-
-Panels (each skipped gracefully, with a note, when its columns are missing):
-  1. filter velocity q at every monitor (columns q_<monitor>, m/s in the file; shown in mm/s)
-  2. gate pressure (gate_pressure, Pa gauge; shown in kPa) and reservoir head (reservoir_head, m)
-  3. sand surface elevation (sand_surface, m)
-  4. cumulative inflow and outflow volume (cumulative_inflow, cumulative_outflow, m3; shown in L)
-
-The shebang is /usr/bin/python3 on purpose: Debian's python3-matplotlib and numpy live there,
-not in the pyenv python3 that may come first on PATH.
+  .venv/bin/python tools/plot_series.py OUTPUT_DIR [--out FILE.png]
 """
-import argparse
-import os
 import sys
 
-import matplotlib
-
-matplotlib.use("Agg")  # files only: no display on build machines or CI
-import matplotlib.pyplot as plt  # noqa: E402  (must follow the backend choice)
-
-from quicksand.results import arrays, read_series as qs_read_series  # noqa: E402
-
-
-def read_series(path):
-    """Returns {column: float array} (quicksand.results: short lines dropped, words as NaN)."""
-    return arrays(qs_read_series(path))
-
-
-def note_missing(ax, what):
-    ax.text(0.5, 0.5, f"no {what} in series.csv", transform=ax.transAxes, ha="center", va="center",
-            color="0.5")
-
-
-def plot_filter_velocity(ax, t, s):
-    monitors = sorted(name for name in s if name.startswith("q_"))
-    for name in monitors:
-        ax.plot(t, s[name] * 1e3, label=name[2:])  # m/s -> mm/s
-    if monitors:
-        ax.axhline(0.0, color="0.7", linewidth=0.8)
-        ax.legend(title="monitor", fontsize="small")
-    else:
-        note_missing(ax, "q_<monitor> columns")
-    ax.set_ylabel("filter velocity q (mm/s)")
-    ax.set_title("Filter velocity at monitors")
-
-
-def plot_gate(ax, t, s):
-    drawn = []
-    if "gate_pressure" in s:
-        drawn += ax.plot(t, s["gate_pressure"] / 1e3, color="tab:red", label="gate pressure")  # Pa -> kPa
-        ax.set_ylabel("gate pressure (kPa, gauge)", color="tab:red")
-    if "reservoir_head" in s:
-        # A second axis: a head in m and a pressure in kPa share no scale.
-        head_axis = ax.twinx() if "gate_pressure" in s else ax
-        drawn += head_axis.plot(t, s["reservoir_head"], color="tab:blue", linestyle="--",
-                                label="reservoir head")
-        head_axis.set_ylabel("reservoir head above gate (m)", color="tab:blue")
-    if drawn:
-        ax.legend(drawn, [line.get_label() for line in drawn], fontsize="small")
-    else:
-        note_missing(ax, "gate_pressure or reservoir_head")
-    ax.set_title("Gate pressure and reservoir head")
-
-
-def plot_sand_surface(ax, t, s):
-    if "sand_surface" in s:
-        ax.plot(t, s["sand_surface"], color="tab:brown")
-    else:
-        note_missing(ax, "sand_surface")
-    ax.set_ylabel("sand surface elevation (m)")
-    ax.set_title("Sand surface")
-
-
-def plot_cumulative_volume(ax, t, s):
-    drawn = False
-    for name, label in (("cumulative_inflow", "inflow"), ("cumulative_outflow", "outflow")):
-        if name in s:
-            ax.plot(t, s[name] * 1e3, label=label)  # m3 -> L
-            drawn = True
-    if drawn:
-        ax.legend(fontsize="small")
-    else:
-        note_missing(ax, "cumulative_inflow or cumulative_outflow")
-    ax.set_ylabel("cumulative volume (L)")
-    ax.set_title("Cumulative inflow and outflow")
-
-
-def main(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    parser.add_argument("output_dir", help="a quicksand output directory holding series.csv")
-    parser.add_argument("--out", help="PNG to write (default OUTPUT_DIR/series.png)")
-    args = parser.parse_args(argv)
-
-    source = os.path.join(args.output_dir, "series.csv")
-    target = args.out or os.path.join(args.output_dir, "series.png")
-    try:
-        s = read_series(source)
-    except (OSError, ValueError) as error:
-        print(f"plot_series: {error}", file=sys.stderr)
-        return 1
-    if "time" not in s:
-        print(f"plot_series: {source}: no 'time' column", file=sys.stderr)
-        return 1
-    t = s["time"]
-
-    fig, axes = plt.subplots(2, 2, figsize=(12, 8), sharex=True, constrained_layout=True)
-    plot_filter_velocity(axes[0, 0], t, s)
-    plot_gate(axes[0, 1], t, s)
-    plot_sand_surface(axes[1, 0], t, s)
-    plot_cumulative_volume(axes[1, 1], t, s)
-    for ax in axes.flat:
-        ax.grid(True, alpha=0.3)
-    for ax in axes[1, :]:
-        ax.set_xlabel("time (s)")
-    fig.suptitle(f"{os.path.abspath(args.output_dir)}  ({len(t)} output times)", fontsize="medium")
-    fig.savefig(target, dpi=120)
-    plt.close(fig)
-    print(target)
-    return 0
-
+try:
+    from quicksand.plots.series import main
+except ImportError as e:
+    sys.exit(f"plot_series.py: {e}")
 
 if __name__ == "__main__":
     sys.exit(main())

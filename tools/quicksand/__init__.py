@@ -6,8 +6,9 @@
     series.plot(x="time", y="gate_flux")
 
 One module per concern: results (the files a run writes, read once each), running (the command:
-finding it, check, run). The closed forms of tools/hydraulics.py stay apart from the solver: they
-are its references.
+finding it, check, run), studies (a base case over parameter values: tools/study.py), figures (a
+run's figures, study.csv), study_plots. The closed forms of hydraulics stay apart from the solver:
+they are its references.
 """
 try:
     import numpy  # noqa: F401

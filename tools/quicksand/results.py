@@ -32,7 +32,7 @@ PIPES_UNITS = {
 }
 # docs/studies.md, "study.csv": a figure's unit is its name's suffix
 STUDY_SUFFIX_UNITS = {"_s": "s", "_m": "m", "_kg": "kg", "_m3s": "m3/s", "_ms": "m/s"}
-FRONT_FIT_UNITS = {"speed": "m/s", "intercept": "m", "r2": "-"}
+FRONT_FIT_UNITS = {"speed": "m/s", "intercept": "m", "r2": "-", "fit_from": "s", "fit_to": "s"}
 UNITS = {"series.csv": SERIES_UNITS, "pipes.csv": PIPES_UNITS, "front_fit.csv": FRONT_FIT_UNITS}
 
 
@@ -56,7 +56,8 @@ def _unit_of_study_column(name):
 
 def read_table(path, unit_of=lambda name: "?", text_columns=()):
     """A CSV file with a header line as a DataFrame: numbers as floats (NaN where a cell is not
-    one), `text_columns` kept as text, lines shorter or longer than the header dropped.
+    one), `text_columns` kept as text ("auto": every column with a filled cell that is not a
+    number), lines shorter or longer than the header dropped.
     DataFrame.attrs["units"] maps each column to unit_of(column); attrs["path"] is the file."""
     with open(path, newline="") as f:
         rows = list(csv.reader(f))
@@ -66,8 +67,13 @@ def read_table(path, unit_of=lambda name: "?", text_columns=()):
     body = [r for r in rows[1:] if len(r) == len(header)]
     frame = pd.DataFrame(body, columns=header)
     for name in header:
-        if name not in text_columns:
-            frame[name] = pd.to_numeric(frame[name], errors="coerce").astype(float)
+        numbers = pd.to_numeric(frame[name], errors="coerce").astype(float)
+        if text_columns == "auto":  # a column is text if a filled cell of it is not a number
+            if (numbers.isna() & (frame[name].str.strip() != "")).any():
+                continue
+        elif name in text_columns:
+            continue
+        frame[name] = numbers
     frame.attrs["units"] = {name: unit_of(name) for name in header}
     frame.attrs["path"] = os.path.abspath(path)
     return frame
@@ -90,13 +96,14 @@ def read_pipes(path):
 
 def read_study(path):
     """study.csv of a study (its directory, or the file): one row per variant."""
-    return read_table(_file(path, "study.csv"), _unit_of_study_column, text_columns=("variant", "status", "error"))
+    # its parameters may be text (time.scheme = "semi_implicit"), and its error column is
+    return read_table(_file(path, "study.csv"), _unit_of_study_column, text_columns="auto")
 
 
 def read_front_fit(path):
-    """front_fit.csv (tools/plot_fluidisation.py): the fluidised front's linear fit."""
-    return read_table(_file(path, "front_fit.csv"), lambda name: FRONT_FIT_UNITS.get(name, "-"),
-                      text_columns=("window",))
+    """front_fit.csv (quicksand.plots.fluidisation): the fluidised front's linear fit, the front's
+    elevation = intercept + speed t over fit_from <= t <= fit_to."""
+    return read_table(_file(path, "front_fit.csv"), lambda name: FRONT_FIT_UNITS.get(name, "?"))
 
 
 class Fields:

@@ -89,12 +89,16 @@ def test_pipes_of_a_2d_run(stripe_run):
 
 
 def test_study_and_front_fit_tables(tmp_path):
-    (tmp_path / "study.csv").write_text("variant,reservoir.head,onset_time_s,peak_gate_flux_m3s,status,error\n"
-                                        "a,0.5,1.5,2e-5,finished,\nb,0.6,,,failed,quicksand: bad\n")
+    (tmp_path / "study.csv").write_text("variant,reservoir.head,time.scheme,onset_time_s,peak_gate_flux_m3s,status,error\n"
+                                        "a,0.5,explicit,1.5,2e-5,finished,\nb,0.6,semi_implicit,,,failed,quicksand: bad\n")
     study = qs.read_study(str(tmp_path))
+    assert list(study["time.scheme"]) == ["explicit", "semi_implicit"]  # a text parameter stays text
+    assert list(study["reservoir.head"]) == [0.5, 0.6]
     assert list(study["variant"]) == ["a", "b"] and list(study["status"]) == ["finished", "failed"]
     assert math.isnan(study["onset_time_s"][1])
     assert study.attrs["units"]["onset_time_s"] == "s" and study.attrs["units"]["peak_gate_flux_m3s"] == "m3/s"
-    (tmp_path / "front_fit.csv").write_text("speed,intercept,r2,window\n0.001,0.02,0.99,2-8 s\n")
+    # as quicksand.plots.fluidisation writes it
+    (tmp_path / "front_fit.csv").write_text("speed,intercept,r2,fit_from,fit_to\n0.001,0.02,0.99,2,8\n")
     fit = qs.read_front_fit(str(tmp_path / "front_fit.csv"))
-    assert fit["speed"][0] == 0.001 and fit["window"][0] == "2-8 s"
+    assert fit["speed"][0] == 0.001 and fit["fit_to"][0] == 8.0
+    assert fit.attrs["units"] == {"speed": "m/s", "intercept": "m", "r2": "-", "fit_from": "s", "fit_to": "s"}

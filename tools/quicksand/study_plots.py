@@ -1,9 +1,8 @@
-#!/usr/bin/env python3
 """The study's plots, in STUDY/output/ (tools/study.py draws them after the runs):
 
   study_series.png   head above the tailwater, filter velocity (gate flux / A_s) and bed height
                      against time, every variant overlaid and labelled; beside the head, each
-                     variant's closed forms for a fixed bed (tools/hydraulics.head_decay): the
+                     variant's closed forms for a fixed bed (quicksand/hydraulics.head_decay): the
                      laminar line's exponential (dotted) and the ODE with the line's own wall
                      friction (Churchill's smooth pipe, Blasius' within 3 % when turbulent) and
                      its minor losses (dashed)
@@ -11,9 +10,8 @@
                      column per parameter, points joined along that parameter and coloured by
                      the others' values
 """
-import csv
+import math
 import os
-import sys
 
 import matplotlib
 
@@ -21,9 +19,9 @@ matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
 import numpy as np  # noqa: E402
 
-sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import hydraulics  # noqa: E402
-import study_figures  # noqa: E402
+from . import hydraulics  # noqa: E402
+from . import figures as study_figures  # noqa: E402
+from . import results  # noqa: E402
 
 # the figures worth a panel, with how to label them
 PLOTTED = [("onset_time_s", "onset time (s)"), ("onset_gradient", "onset gradient (-)"),
@@ -92,20 +90,17 @@ def save(fig, study, name, dpi):
     return out
 
 
-def read_table(path):
-    with open(path, newline="") as f:
-        return list(csv.DictReader(f))
-
-
-def number(text):
+def number(value):
+    """A cell as a float, None where it is empty or not a number."""
     try:
-        return float(text)
+        x = float(value)
     except (TypeError, ValueError):
         return None
+    return None if math.isnan(x) else x
 
 
 def plot_figures(study):
-    rows = read_table(os.path.join(study.output, "study.csv"))
+    rows = results.read_study(study.output).to_dict("records")
     shown = [(k, name) for k, name in PLOTTED if any(number(r[k]) is not None for r in rows)]
     numeric = [k for k in study.keys if all(number(r[k]) is not None for r in rows)]
     if not shown or not numeric:
