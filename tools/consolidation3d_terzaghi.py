@@ -1,9 +1,8 @@
 #!/usr/bin/env python3
 """The 3D consolidation benchmark run longer, against Terzaghi (issue 7).
 
-    cp -r cases/benchmark/consolidation3d /tmp/c3d           # then in /tmp/c3d/case.toml:
-    #   end = 0.05, output_interval = 0.0025                 (T = c_v t / H^2 = 0.65)
-    OMP_NUM_THREADS=2 build/mpm/quicksand run /tmp/c3d        # 7143 steps, about 3 min
+    cp -r cases/benchmark/consolidation3d /tmp/c3d           # T = c_v t / H^2 = 0.65 at 0.05 s:
+    OMP_NUM_THREADS=2 build/mpm/quicksand run /tmp/c3d --set time.end=0.05 --set time.output_interval=0.0025
     /usr/bin/python3 tools/consolidation3d_terzaghi.py /tmp/c3d
 
 Reads CASE/case.toml and CASE/output/checkpoint.h5 (the state at the end). Prints, per cell row
