@@ -4,8 +4,12 @@
 #   bash tools/setup.sh              compiler, CMake, Eigen, HDF5, toml++, GoogleTest/Mock,
 #                                    Google Benchmark, hypre (its AMG is benchmarked against the
 #                                    pressure solvers), Python (numpy, pandas, h5py, matplotlib,
-#                                    pytest) and the quicksand Python package in .venv
+#                                    pytest) and the quicksand Python package in .venv, pybind11
+#                                    (the solver's Python binding)
 #   bash tools/setup.sh --fuzz       the same plus clang with libFuzzer and OpenMP (tests/fuzz)
+#   bash tools/setup.sh --slurm      the same plus Slurm's daemons and client and munge: the
+#                                    study tests start a one-node cluster of their own (a user's
+#                                    studies need only the cluster's sbatch, squeue and scancel)
 #   bash tools/setup.sh --mpi        the same plus Debian's Open MPI (libopenmpi-dev, mpirun): the
 #                                    build runs on MPI ranks and the mpi tests run
 #   bash tools/setup.sh --openfoam   the same plus Debian's `openfoam` package (OpenFOAM reservoir),
@@ -19,19 +23,21 @@
 # Uses sudo only when not run as root.
 set -euo pipefail
 
-usage() { sed -n '2,19p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
+usage() { sed -n '2,23p' "${BASH_SOURCE[0]}" | sed 's/^# \{0,1\}//'; }
 
 packages=(cmake g++ make pkg-config libeigen3-dev libhdf5-dev zlib1g-dev libtomlplusplus-dev liblapack-dev
           libgtest-dev libgmock-dev libbenchmark-dev libhypre-dev
-          python3-matplotlib python3-numpy python3-h5py python3-pandas python3-pytest python3-venv python3-setuptools python3-wheel)
+          python3-matplotlib python3-numpy python3-h5py python3-pandas python3-pytest python3-venv python3-setuptools python3-wheel
+          python3-dev pybind11-dev)
 with_openfoam=false
 for arg in "$@"; do
     case "$arg" in
         --openfoam) with_openfoam=true ;;
         --fuzz) packages+=(clang libclang-rt-dev libomp-dev) ;;
         --mpi) packages+=(libopenmpi-dev openmpi-bin) ;;
+        --slurm) packages+=(slurmctld slurmd slurm-client munge) ;;
         -h|--help) usage; exit 0 ;;
-        *) echo "setup.sh: unknown option '$arg' (known: --openfoam, --mpi, --fuzz, --help)" >&2; exit 2 ;;
+        *) echo "setup.sh: unknown option '$arg' (known: --openfoam, --mpi, --slurm, --fuzz, --help)" >&2; exit 2 ;;
     esac
 done
 # the OpenFOAM headers come from the source package, checked with the Debian archive keyring:
@@ -196,8 +202,11 @@ setup_python_package() {
     if [[ ! -x "$venv/bin/python" ]]; then
         /usr/bin/python3 -m venv --system-site-packages "$venv"
     fi
-    if ! "$venv/bin/python" -c 'import quicksand' 2>/dev/null; then
+    # again when tools/pyproject.toml changed (its entry points), else once
+    local stamp="$venv/.quicksand-pyproject"
+    if ! cmp -s "$root/tools/pyproject.toml" "$stamp" || ! "$venv/bin/python" -c 'import quicksand' 2>/dev/null; then
         "$venv/bin/python" -m pip install --quiet --no-deps --no-build-isolation --no-index --editable "$root/tools"
+        cp "$root/tools/pyproject.toml" "$stamp"
         echo "setup.sh: the quicksand Python package installed in $venv (source $venv/bin/activate)"
     fi
 }

@@ -15,7 +15,7 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
-bash tools/build.sh --openfoam --mpi   # CI runs the OpenFOAM and the MPI tests too
+bash tools/build.sh --openfoam --mpi --slurm   # CI runs the OpenFOAM, MPI and Slurm tests too
 
 build_dir="${QUICKSAND_BUILD_DIR:-build}"
 log="$(mktemp)"
@@ -36,7 +36,7 @@ set -e
 sanitizer_stage() {
     local dir="${build_dir}-sanitize"
     cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQUICKSAND_SANITIZE=ON \
-        -DQUICKSAND_WITH_OPENFOAM=OFF -DQUICKSAND_BUILD_BENCHMARKS=OFF >/dev/null || return 1
+        -DQUICKSAND_WITH_OPENFOAM=OFF -DQUICKSAND_WITH_PYTHON=OFF -DQUICKSAND_BUILD_BENCHMARKS=OFF >/dev/null || return 1
     # only what those labels run: the verification, validation and MPI binaries, the larger
     # part of a build, are not run here (CI's 45 minutes)
     cmake --build "$dir" -j2 --target quicksand quicksand_unit_tests quicksand_resume_tests \
@@ -55,7 +55,7 @@ fuzz_stage() {
     bash tools/setup.sh --fuzz >/dev/null || return 1
     CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQUICKSAND_FUZZ=ON \
         -DQUICKSAND_FUZZ_SECONDS="${QUICKSAND_FUZZ_SECONDS:-40}" -DQUICKSAND_BUILD_TESTS=OFF \
-        -DQUICKSAND_WITH_OPENFOAM=OFF -DQUICKSAND_BUILD_BENCHMARKS=OFF >/dev/null || return 1
+        -DQUICKSAND_WITH_OPENFOAM=OFF -DQUICKSAND_WITH_PYTHON=OFF -DQUICKSAND_BUILD_BENCHMARKS=OFF >/dev/null || return 1
     cmake --build "$dir" -j2 --target fuzz_case_loader fuzz_checkpoint fuzz_checkpoint_state quicksand \
         >/dev/null || return 1
     ctest --test-dir "$dir" --output-on-failure --no-tests=error -j2 -L fuzz -V 2>&1 \

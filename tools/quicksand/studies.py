@@ -228,16 +228,19 @@ def find_quicksand():
 
 
 def check_all(study):
-    """quicksand check on every variant; the study is refused if any fails, naming each."""
-    failures = []
+    """quicksand check on every variant; the study is refused if any fails, naming each. Returns
+    each variant's report (what a scheduler reads the memory estimate from)."""
+    failures, reports = [], {}
     for v in study.variants:
         r = subprocess.run(study.command("check", v), capture_output=True, text=True)
         if r.returncode != 0:
             message = (r.stderr.strip() or r.stdout.strip()).replace("quicksand: error: ", "")
             failures.append(f"  {v['name']}: {message}")
+        reports[v["name"]] = r.stdout
     if failures:
         raise StudyError(f"{study.path}: {len(failures)} of {len(study.variants)} variants fail their check; "
                          "the study did not start:\n" + "\n".join(failures))
+    return reports
 
 
 def status_of(variant):
@@ -254,6 +257,57 @@ def write_status(variant, status):
     with open(tmp, "w") as f:
         json.dump(status, f, indent=1)
     os.replace(tmp, os.path.join(variant["out"], "study-status.json"))
+
+
+def resumable(variant):
+    """Whether a variant's next run continues from its checkpoint: it has one, and it did not fail
+    (a failed run starts again; an interrupted or scheduler-killed one resumes)."""
+    status = status_of(variant)
+    return os.path.isfile(os.path.join(variant["out"], "checkpoint.h5")) and not (status and status["state"] == "failed")
+
+
+def run_variant(study, v, on_start=None, on_line=None, stopping=lambda: False):
+    """Runs one variant as `quicksand run` (resuming when resumable), its output appended to
+    STUDY/output/<variant>.log, and records how it ended in its study-status.json: 'finished', or
+    'failed' with quicksand's error. Interrupted (exit 130 or 143, or `stopping()`) it records
+    nothing: the next call resumes it. Returns (exit code, state text, wall seconds). The local
+    scheduler calls it in a thread per variant, a Slurm job array in each task."""
+    os.makedirs(os.path.dirname(v["out"]), exist_ok=True)
+    resume = resumable(v)
+    if status_of(v):
+        os.remove(os.path.join(v["out"], "study-status.json"))
+    env = dict(os.environ, OMP_NUM_THREADS=str(study.threads))
+    cmd = study.command("run", v, resume)
+    start = time.time()
+    log_path = os.path.join(os.path.dirname(v["out"]), v["name"] + ".log")
+    with open(log_path, "a") as log:
+        log.write("$ " + " ".join(shlex.quote(c) for c in cmd) + "\n")
+        log.flush()
+        p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env,
+                             start_new_session=True)
+        if on_start:
+            on_start(p, resume)
+        last_error = ""
+        for line in p.stdout:
+            log.write(line)
+            log.flush()
+            line = line.rstrip()
+            if "error" in line or "Error" in line:
+                last_error = line
+            if on_line:
+                on_line(line, parse_fraction(line))
+        code = p.wait()
+    wall = time.time() - start
+    if code == 0:
+        write_status(v, {"state": "finished", "wall_seconds": wall, "resumed": resume})
+        state = "finished"
+    elif code in (130, 143) or stopping():
+        state = "interrupted"  # no status: the next call resumes it
+    else:
+        error = last_error.replace("quicksand: error: ", "")
+        write_status(v, {"state": "failed", "exit_code": code, "error": error})
+        state = f"FAILED ({error[:200]})"
+    return code, state, wall
 
 
 class Runner:
@@ -278,47 +332,22 @@ class Runner:
         return out
 
     def run_one(self, v):
-        os.makedirs(os.path.dirname(v["out"]), exist_ok=True)
-        status = status_of(v)
-        resume = os.path.isfile(os.path.join(v["out"], "checkpoint.h5")) and not (status and status["state"] == "failed")
-        if status:
-            os.remove(os.path.join(v["out"], "study-status.json"))
-        env = dict(os.environ, OMP_NUM_THREADS=str(self.study.threads))
-        cmd = self.study.command("run", v, resume)
         start = time.time()
-        log_path = os.path.join(os.path.dirname(v["out"]), v["name"] + ".log")
-        with open(log_path, "a") as log:
-            log.write("$ " + " ".join(shlex.quote(c) for c in cmd) + "\n")
-            log.flush()
-            p = subprocess.Popen(cmd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, env=env,
-                                 start_new_session=True)
+
+        def started(p, resume):
             with self.lock:
                 self.procs[v["name"]] = p
                 self.started[v["name"]] = start
                 self.progress[v["name"]] = (0.0, 0.0, "starting" + (" (resuming)" if resume else ""))
-            last_error = ""
-            for line in p.stdout:
-                log.write(line)
-                line = line.rstrip()
-                if "error" in line or "Error" in line:
-                    last_error = line
-                frac = parse_fraction(line)
-                with self.lock:
-                    f0 = self.progress[v["name"]][0]
-                    self.progress[v["name"]] = (frac if frac is not None else f0, time.time() - start, line.strip())
-            code = p.wait()
+
+        def line_read(line, frac):
+            with self.lock:
+                f0 = self.progress[v["name"]][0]
+                self.progress[v["name"]] = (frac if frac is not None else f0, time.time() - start, line.strip())
+
+        code, state, wall = run_variant(self.study, v, started, line_read, lambda: self.stopping)
         with self.lock:
             del self.procs[v["name"]]
-        wall = time.time() - start
-        if code == 0:
-            write_status(v, {"state": "finished", "wall_seconds": wall, "resumed": resume})
-            state = "finished"
-        elif code in (130, 143) or self.stopping:
-            state = "interrupted"  # no status: the next call resumes it
-        else:
-            write_status(v, {"state": "failed", "exit_code": code, "error": last_error.replace("quicksand: error: ", "")})
-            state = f"FAILED ({last_error.replace('quicksand: error: ', '')[:200]})"
-        with self.lock:
             self.progress[v["name"]] = (1.0 if code == 0 else self.progress[v["name"]][0], wall, state)
         if not self.quiet:
             print(f"study: {v['name']}: {state} after {format_seconds(wall)}", flush=True)
@@ -406,18 +435,32 @@ def main(argv=None):
     ap.add_argument("--retry-failed", action="store_true", help="run failed variants again")
     ap.add_argument("--no-plots", action="store_true", help="write study.csv without plots")
     ap.add_argument("--quiet", action="store_true", help="no progress lines")
+    ap.add_argument("--scheduler", choices=["local", "slurm"], default="local",
+                    help="run the variants here (local, the default) or as a Slurm job array (quicksand/slurm.py)")
+    ap.add_argument("--slurm-task", metavar="TASKS.json", help=argparse.SUPPRESS)  # inside a job array's task
     args = ap.parse_args(argv)
     try:
         study = Study(args.study)
+        if args.slurm_task:
+            from . import slurm
+            return slurm.run_task(study, args.slurm_task)
         if not args.collect:
-            check_all(study)
+            reports = check_all(study)
             if not args.quiet:
                 print(f"study: all {len(study.variants)} variants pass their check", flush=True)
             if args.check:
                 return 0
-            if not Runner(study, args.retry_failed, args.quiet).run():
+            if args.scheduler == "slurm":
+                from . import slurm
+                scheduler = slurm.SlurmScheduler(study, reports, args.retry_failed, args.quiet)
+            else:
+                scheduler = Runner(study, args.retry_failed, args.quiet)
+            if not scheduler.run():
+                again = f".venv/bin/python tools/study.py {shlex.quote(args.study)}"
+                if args.scheduler != "local":
+                    again += f" --scheduler {args.scheduler}"
                 print(f"study: interrupted; the finished variants are kept, the others resume from their "
-                      f"checkpoints: .venv/bin/python tools/study.py {shlex.quote(args.study)}", file=sys.stderr)
+                      f"checkpoints: {again}", file=sys.stderr)
                 return 130
         from . import figures
         table = figures.write_study_csv(study)
