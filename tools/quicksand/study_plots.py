@@ -83,11 +83,13 @@ def plot_series(study):
 
 
 def save(fig, study, name, dpi):
+    """Writes the figure to STUDY/output/NAME; returns its path and the figure (closed: its axes
+    keep what was drawn)."""
     fig.tight_layout()
     out = os.path.join(study.output, name)
     fig.savefig(out, dpi=dpi)
     plt.close(fig)
-    return out
+    return out, fig
 
 
 def number(value):
@@ -136,5 +138,5 @@ def plot_figures(study):
 
 
 def plot_study(study):
-    paths = [plot_series(study), plot_figures(study)]
-    return [p for p in paths if p]
+    """Both plots of a study; returns their paths."""
+    return [drawn[0] for drawn in (plot_series(study), plot_figures(study)) if drawn]

@@ -5,8 +5,10 @@ import os
 import subprocess
 import sys
 
+import numpy as np
 import pytest
 
+import quicksand as qs
 from quicksand import figures, studies
 
 TOOLS = os.path.abspath(os.path.join(os.path.dirname(__file__), ".."))
@@ -39,3 +41,44 @@ def test_a_study_file_that_is_not_there_is_named(tmp_path):
     with pytest.raises(studies.StudyError) as refused:
         studies.Study(str(tmp_path / "missing.toml"))
     assert "missing.toml" in str(refused.value)
+
+
+@pytest.fixture(scope="module")
+def small_study(quicksand_binary, tmp_path_factory):
+    """Two reservoirs of the main job's lumped twin, 1 s each, run by the local scheduler."""
+    folder = tmp_path_factory.mktemp("study")
+    base = os.path.relpath(os.path.join(TOOLS, "..", "cases", "deltaresColumnLumped"), folder)
+    (folder / "study.toml").write_text(f'base = "{base}"\nparallel = 2\nthreads = 1\n'
+                                       '[parameters]\n"reservoir.area" = [0.0083, 0.0166]\n'
+                                       '[set]\n"time.end" = 1.0\n"output.fields" = false\n')
+    assert studies.main([str(folder / "study.toml"), "--quiet", "--no-plots"]) == 0
+    return studies.Study(str(folder / "study.toml"))
+
+
+def test_a_studys_table_holds_each_variants_figures(small_study):
+    table = qs.read_study(small_study.output)
+    assert list(table["reservoir.area"]) == [0.0083, 0.0166]
+    assert list(table["status"]) == ["finished", "finished"]
+    for v, peak in zip(small_study.variants, table["peak_gate_flux_m3s"]):
+        assert peak == pytest.approx(qs.read_series(v["out"])["gate_flux"].max(), rel=1e-9)
+
+
+def test_the_study_plots_draw_each_variants_series(small_study):
+    from quicksand import study_plots
+
+    path, fig = study_plots.plot_series(small_study)
+    assert os.path.getsize(path) > 10_000
+    head, velocity, bed = fig.axes[:3]
+    runs = [line for line in head.lines if line.get_linestyle() == "-"]  # the closed forms are dotted, dashed
+    assert len(runs) == 2
+    for v, line in zip(small_study.variants, runs):
+        s = qs.read_series(v["out"])
+        np.testing.assert_allclose(line.get_xdata(), s["time"])
+        np.testing.assert_allclose(bed.lines[small_study.variants.index(v)].get_ydata(), 1e3 * s["bed_height"])
+    path, fig = study_plots.plot_figures(small_study)
+    assert os.path.getsize(path) > 10_000
+    table = qs.read_study(small_study.output)
+    # a row per figure study.csv has values for, against the one parameter
+    peak = next(ax for ax in fig.axes if ax.get_ylabel() == "peak filter velocity (m/s)")
+    np.testing.assert_allclose(peak.lines[0].get_xdata(), table["reservoir.area"])
+    np.testing.assert_allclose(peak.lines[0].get_ydata(), table["peak_filter_velocity_ms"])
