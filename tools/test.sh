@@ -7,7 +7,7 @@
 # Without arguments it then runs the Python package's tests (pytest, tools/tests), builds a second
 # tree with AddressSanitizer and UBSan (build-sanitize) and runs the fast labels (unit, hostile,
 # resume, cli) there too (QUICKSAND_SANITIZE=0 skips it),
-# and a third with clang and libFuzzer (build-fuzz) whose three fuzzers run 40 s each
+# and a third with clang and libFuzzer (build-fuzz) whose three fuzzers run 20 s each
 # (tests/fuzz; QUICKSAND_FUZZ=0 skips it, QUICKSAND_FUZZ_SECONDS sets the time).
 #
 # Ends with CTest's summary line ("100% tests passed, 0 tests failed out of N") and exits with
@@ -54,7 +54,7 @@ fuzz_stage() {
     local dir="${build_dir}-fuzz"
     bash tools/setup.sh --fuzz >/dev/null || return 1
     CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQUICKSAND_FUZZ=ON \
-        -DQUICKSAND_FUZZ_SECONDS="${QUICKSAND_FUZZ_SECONDS:-40}" -DQUICKSAND_BUILD_TESTS=OFF \
+        -DQUICKSAND_FUZZ_SECONDS="${QUICKSAND_FUZZ_SECONDS:-20}" -DQUICKSAND_BUILD_TESTS=OFF \
         -DQUICKSAND_WITH_OPENFOAM=OFF -DQUICKSAND_WITH_PYTHON=OFF -DQUICKSAND_BUILD_BENCHMARKS=OFF >/dev/null || return 1
     cmake --build "$dir" -j2 --target fuzz_case_loader fuzz_checkpoint fuzz_checkpoint_state quicksand \
         >/dev/null || return 1
@@ -67,7 +67,7 @@ fuzz_stage() {
 # under pytest, in the virtual environment setup.sh made (tools/setup.sh: .venv), with this
 # build's quicksand
 python_stage() {
-    QUICKSAND="$build_dir/mpm/quicksand" .venv/bin/python -m pytest -q -p no:cacheprovider tools/tests 2>&1 \
+    QUICKSAND="$(realpath "$build_dir/mpm/quicksand")" QUICKSAND_BUILD_DIR="$(realpath "$build_dir")" .venv/bin/python -m pytest -q -p no:cacheprovider tools/tests 2>&1 \
         | tail -n 30 | grep -E '(passed|failed|error|Error|FAILED)' | sed 's/^/pytest: /'
     return "${PIPESTATUS[0]}"
 }

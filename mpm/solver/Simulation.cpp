@@ -118,6 +118,8 @@ struct Simulation::Run {
     virtual long steps() const = 0;
     virtual int dimension() const = 0;
     virtual ColumnState state() const = 0;
+    virtual std::vector<CellRow> profile() const = 0;
+    virtual std::vector<PointFieldValues> pointFields(bool solid) const = 0;
     virtual void advanceTo(double end) = 0;
     virtual void writeOutput() = 0;
     virtual void writeCheckpoint() = 0;
@@ -152,6 +154,16 @@ public:
     long steps() const override { return solver_->stepCount(); }
     int dimension() const override { return D; }
     ColumnState state() const override { return solver_->columnState(); }
+    std::vector<CellRow> profile() const override { return solver_->profile(); }
+    std::vector<PointFieldValues> pointFields(bool solid) const override {
+        std::vector<PointFieldValues> out;
+        const auto copy = [&](const auto& values, const FieldSpec& spec) {
+            if (spec.components > 0) out.push_back({spec.name, spec.components, {values.begin(), values.end()}});
+        };
+        if (solid) solver_->solid().forEachField(copy);
+        else solver_->liquid().forEachField(copy);
+        return out;
+    }
 
     void advanceTo(double end) override;
     void writeOutput() override;
@@ -537,6 +549,8 @@ double Simulation::dt() const { return run_->dt(); }
 long Simulation::steps() const { return run_->steps(); }
 int Simulation::dimension() const { return run_->dimension(); }
 ColumnState Simulation::state() const { return run_->state(); }
+std::vector<CellRow> Simulation::profile() const { return run_->profile(); }
+std::vector<PointFieldValues> Simulation::pointFields(bool solid) const { return run_->pointFields(solid); }
 void Simulation::advanceTo(double end) { run_->advanceTo(end); }
 void Simulation::writeOutput() { run_->writeOutput(); }
 void Simulation::writeCheckpoint() { run_->writeCheckpoint(); }

@@ -14,11 +14,21 @@
 // checkpoint and throws Interrupted, saying how to resume. An error inside a step throws with the
 // time of the last good checkpoint named. What is written where: solver/Run.hpp.
 #include <memory>
+#include <string>
+#include <vector>
 
 #include "case/CaseConfig.hpp"
 #include "solver/Run.hpp"
 
 namespace qs {
+
+/// One persistent point field of the registry (points/PointSet.hpp), copied out: `components`
+/// values a point, point after point (integers as doubles).
+struct PointFieldValues {
+    std::string name;
+    int components = 0;
+    std::vector<double> values;
+};
 
 class Simulation {
 public:
@@ -35,6 +45,11 @@ public:
     int dimension() const;
     /// The column's measurements now (gate flux, surfaces, ledger...), as series.csv records them.
     ColumnState state() const;
+    /// The cell-row profile of now (the rows' means along the vertical).
+    std::vector<CellRow> profile() const;
+    /// The registry's fields of the solid (or liquid) points of this rank (every point on one
+    /// rank): what the Python binding hands out as arrays.
+    std::vector<PointFieldValues> pointFields(bool solid) const;
 
     /// Advances to time `end` (s; to the step nearest it), writing the outputs and checkpoints
     /// that fall due on the case's intervals.

@@ -88,6 +88,7 @@ TEST(BatchSettling, ShippedGrid) {
 class BatchSettlingIn : public ::testing::TestWithParam<Geometry> {};
 
 TEST_P(BatchSettlingIn, MatchesKynchAsIn1D) {
+    QS_SEMI_IMPLICIT_ONLY();  // explicit: 1D above, fluidisation in 2D, axisymmetry and 3D elsewhere
     const Errors e = runSettling(0.0062, [](CaseConfig& c) {
         inGeometry(c, GetParam());
         EXPECT_FALSE(c.column.overflowLevel) << "the free surface is what this tests";

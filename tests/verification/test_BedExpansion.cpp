@@ -165,6 +165,7 @@ TEST(BedExpansion, AnExpandedBedAtUniformPorosityStaysUniform) {
 class BedExpansionIn : public ::testing::TestWithParam<Geometry> {};
 
 TEST_P(BedExpansionIn, MatchesDriftFluxOverTheWholeExpansion) {
+    QS_SEMI_IMPLICIT_ONLY();  // explicit: BedExpansionIn3D and BedExpansion2D
     const Errors e = runExpansion(0.0124, [](CaseConfig& c) { inGeometry(c, GetParam()); });
     expectWithinTolerances(e);
     EXPECT_LT(std::abs(e.height), 0.01);

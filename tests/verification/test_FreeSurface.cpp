@@ -21,6 +21,7 @@
 #include "VerificationCase.hpp"
 #include "io/Checkpoint.hpp"
 #include "reservoir/ReservoirModel.hpp"
+#include "solver/RunSize.hpp"
 #include "solver/DoublePointSolver.hpp"
 
 using namespace qs;
@@ -169,6 +170,9 @@ SeededFreeWater freeWaterAfter(double picShare, double noise, double swirl, int 
     c.liquid.picShare = picShare;
     c.liquid.picDampingTime = dampingTime;
     if (courant > 0) c.time.courant = courant;
+    // outputs every 2 h / c: 5 steps at courant 0.4, 10 at 0.2, so that the step fitted to them
+    // (solver/TimeLattice.hpp) is the stable one at both and the halved one is exactly half
+    c.time.outputInterval = 2 * stableTimeStep(c) / c.time.courant;
     auto reservoir = makeReservoirModel(c);
     DoublePointSolver<2> solver(c, *reservoir);
     if (stepSize) *stepSize = solver.dt();

@@ -84,6 +84,7 @@ TEST(Piping, ARandomBedAndItsMirrorImageGiveMirroredResults) {
 }
 
 TEST(Piping, AUniformBedUnderTheSameHeadStaysLaterallyUniformAndDoesNotPipe) {
+    QS_SEMI_IMPLICIT_ONLY();  // explicit: the random bed's mirror test pipes
     // the random bed's case with standard deviation 0: every row of cells stays in one state
     // and at one porosity, and no pipe is found, while the bed fluidises from the filter
     const CaseRun run = runVerificationCase("random_bed", [](CaseConfig& c) { c.initial.porosityField.enabled = false; });
@@ -351,10 +352,12 @@ void checkStripe(const StripeRun& s, const char* where) {
 }  // namespace
 
 TEST(Piping, ALooseStripeInTheInteriorFluidisesFirstAndMakesAnInteriorPipe) {
+    QS_SEMI_IMPLICIT_ONLY();
     checkStripe(runStripe(false), "interior");
 }
 
 TEST(Piping, ALooseStripeAgainstTheWallFluidisesFirstAndMakesAWallPipe) {
+    QS_SEMI_IMPLICIT_ONLY();
     checkStripe(runStripe(true), "wall");
 }
 
@@ -430,7 +433,7 @@ TEST(PipingConvergence, TheLooseStripesOnsetAtThreeCellSizes) {
     // The grid convergence of the onset is the continuum's, not the time scheme's: it runs with the
     // semi-implicit step (issue 42 asks convergence of it), where 4.65 mm cells cost a sixth of
     // the explicit step's (explicit: 162 s and 140 s of CI's 45 minutes).
-    if (testScheme() == "explicit") GTEST_SKIP() << "grid convergence runs with the semi-implicit step";
+    QS_SEMI_IMPLICIT_ONLY();
     // the onset falls as the cells shrink, each refinement moving it less, towards the block's
     // friction bound (docs/piping.md): within 3 % of it on every grid, the finest within 1.5 %
     // (achieved +2.6 %, -0.1 %, -0.7 %), and well above the stripe's own i_c (7.4 % below)
@@ -451,7 +454,7 @@ TEST(PipingConvergence, TheLooseStripesOnsetAtThreeCellSizes) {
 }
 
 TEST(PipingConvergence, TheFirstPipeOfOneRandomBedAtTwoCellSizes) {
-    if (testScheme() == "explicit") GTEST_SKIP() << "grid convergence runs with the semi-implicit step (above)";
+    QS_SEMI_IMPLICIT_ONLY();  // as above
     // cases/verification/random_bed (seed 3, correlation length 10 mm) at 9.3 and 6.2 mm: the
     // field is the same function of position, sampled by more points. The bed's gradient when the
     // first pipe forms agrees within 3 %, as the onset criteria of the other problems do

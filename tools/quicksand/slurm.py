@@ -91,6 +91,7 @@ class SlurmScheduler:
             f"#SBATCH --chdir={self.study.dir}",
             "# written by quicksand/slurm.py: one task per variant of STUDY/output/slurm/tasks.json",
             f"export OMP_NUM_THREADS={self.study.threads}",
+            f"export QUICKSAND={shlex.quote(os.path.abspath(self.study.quicksand))}  # the binary the study was checked with",
             f"export PYTHONPATH={shlex.quote(TOOLS)}${{PYTHONPATH:+:$PYTHONPATH}}",
             f"exec {shlex.quote(self.python)} {shlex.quote(os.path.join(TOOLS, 'study.py'))} {shlex.quote(self.study.path)} "
             f"--slurm-task {shlex.quote(tasks_file)}",
@@ -136,6 +137,15 @@ class SlurmScheduler:
             if done.returncode == 0 and words:
                 return words[0]
         return "UNKNOWN"
+
+    def task_output(self, k):
+        """The last line task k wrote to its output file (STUDY/output/slurm/task_K.out)."""
+        try:
+            with open(os.path.join(self.folder, f"task_{k}.out")) as f:
+                lines = [line.strip() for line in f if line.strip()]
+        except OSError:
+            return ""
+        return lines[-1] if lines else ""
 
     def progress_of(self, v):
         """The running variant's last progress fraction, from its log."""
@@ -201,6 +211,9 @@ class SlurmScheduler:
             slurm_state = self.final_state(job, k)
             error = (f"Slurm ended task {job}_{k} ({slurm_state}) before the run did; its checkpoint is kept and the "
                      "next run of the study resumes it")
+            said = self.task_output(k)
+            if slurm_state == "FAILED" and said:  # the task itself failed, before or around its run
+                error = f"task {job}_{k} failed ({self.folder}/task_{k}.out): {said}"
             if slurm_state in ENDED_BY_SLURM or slurm_state == "UNKNOWN":
                 studies.write_status(v, {"state": "killed", "error": error, "slurm_state": slurm_state})
             state = f"killed ({slurm_state})"
