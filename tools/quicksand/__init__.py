@@ -17,11 +17,12 @@ except ImportError as missing:  # a pyenv or conda python3 without Debian's pack
     raise ImportError(f"the quicksand package needs numpy and pandas ({missing}); run `bash tools/setup.sh` and use "
                       "its virtual environment: `source .venv/bin/activate` (or .venv/bin/python)") from missing
 
-from .results import (Fields, UNITS, arrays, read_fields, read_front_fit, read_pipes, read_series, read_study,
-                      read_table)
+from .results import (Fields, UNITS, arrays, read_fields, read_front_fit, read_function_object, read_pipes,
+                      read_postprocessing, read_series, read_study, read_table)
 from .running import QuicksandError, Run, check, find_quicksand, run, set_arguments
 
 __version__ = "0.1.0"
 
-__all__ = ["Fields", "UNITS", "arrays", "read_fields", "read_front_fit", "read_pipes", "read_series", "read_study",
-           "read_table", "QuicksandError", "Run", "check", "find_quicksand", "run", "set_arguments"]
+__all__ = ["Fields", "UNITS", "arrays", "read_fields", "read_front_fit", "read_function_object", "read_pipes",
+           "read_postprocessing", "read_series", "read_study", "read_table", "QuicksandError", "Run", "check",
+           "find_quicksand", "run", "set_arguments"]

@@ -144,3 +144,78 @@ class Fields:
 def read_fields(path):
     """fields.h5 of a run (its output directory, or the file)."""
     return Fields(path)
+
+
+def _cells(line):
+    """A postProcessing line's cells, a vector "(a b c)" kept as one cell."""
+    return re.findall(r"\([^)]*\)|\S+", line)
+
+
+def read_function_object(path):
+    """One file an OpenFOAM function object wrote (postProcessing/NAME/TIME/FILE): probes (a
+    column per probe, `probe0`, ..., a vector one as probe0_x, _y, _z), surfaceFieldValue,
+    yPlus and the like (the columns of its last header line). Times in s; the other values as
+    OpenFOAM writes them (an incompressible case's p is kinematic, m2/s2)."""
+    with open(path) as f:
+        lines = f.read().splitlines()
+    header = [line[1:].strip() for line in lines if line.startswith("#")]
+    body = [_cells(line) for line in lines if line.strip() and not line.startswith("#")]
+    probes = [h for h in header if h.startswith("Probe ") and "(" in h]
+    if probes:
+        names = [f"probe{k}" for k in range(len(probes))]
+    else:
+        names = header[-1].split()[1:] if header and header[-1].split()[:1] == ["Time"] else []
+    columns, rows = ["time"], [[] for _ in body]
+    for j, name in enumerate(names):
+        sample = next((r[j + 1] for r in body if len(r) > j + 1), "")
+        if sample.startswith("("):
+            parts = len(sample.strip("()").split())
+            columns += [f"{name}_{axis}" for axis in "xyz"[:parts]]
+            for r, row in zip(body, rows):
+                row += r[j + 1].strip("()").split() if len(r) > j + 1 else [""] * parts
+        else:
+            columns.append(name)
+            for r, row in zip(body, rows):
+                row.append(r[j + 1] if len(r) > j + 1 else "")
+    for r, row in zip(body, rows):
+        row.insert(0, r[0])
+    frame = pd.DataFrame(rows, columns=columns)
+    for name in columns:
+        numbers = pd.to_numeric(frame[name], errors="coerce").astype(float)
+        if not (numbers.isna() & (frame[name] != "")).any():
+            frame[name] = numbers
+    frame.attrs["units"] = {name: "s" if name == "time" else "OpenFOAM's" for name in columns}
+    frame.attrs["path"] = os.path.abspath(path)
+    if probes:
+        frame.attrs["probes"] = [tuple(float(x) for x in h[h.index("(") + 1:h.index(")")].split()) for h in probes]
+    return frame
+
+
+def read_postprocessing(path):
+    """An OpenFOAM line's postProcessing (a run's output directory, its openfoam/ folder, or the
+    postProcessing folder itself): {"NAME/FILE": table}, each function object's file read once,
+    the time folders of a resumed run (postProcessing/NAME/0, NAME/12.5, ...) joined in time order."""
+    folder = path
+    for candidate in (os.path.join(path, "openfoam", "postProcessing"), os.path.join(path, "postProcessing")):
+        if os.path.isdir(candidate):
+            folder = candidate
+            break
+    if not os.path.isdir(folder):
+        raise FileNotFoundError(f"{path}: no postProcessing folder (an OpenFOAM line's output/openfoam/postProcessing)")
+    tables = {}
+    for name in sorted(os.listdir(folder)):
+        times = []
+        for t in os.listdir(os.path.join(folder, name)):
+            try:
+                times.append((float(t), t))
+            except ValueError:
+                continue
+        files = {}
+        for _, t in sorted(times):
+            for file in sorted(os.listdir(os.path.join(folder, name, t))):
+                files.setdefault(file, []).append(read_function_object(os.path.join(folder, name, t, file)))
+        for file, parts in files.items():
+            joined = pd.concat(parts, ignore_index=True) if len(parts) > 1 else parts[0]
+            joined.attrs = dict(parts[0].attrs)
+            tables[f"{name}/{file}"] = joined
+    return tables

@@ -102,3 +102,27 @@ def test_study_and_front_fit_tables(tmp_path):
     fit = qs.read_front_fit(str(tmp_path / "front_fit.csv"))
     assert fit["speed"][0] == 0.001 and fit["fit_to"][0] == 8.0
     assert fit.attrs["units"] == {"speed": "m/s", "intercept": "m", "r2": "-", "fit_from": "s", "fit_to": "s"}
+
+
+DATA = os.path.join(os.path.dirname(__file__), "data")
+
+
+def test_an_openfoam_lines_postprocessing_is_read_once_per_file():
+    # heads of the files the suite's coupled user case wrote (tests/openfoam/test_UserCases.cpp:
+    # probes of p and U, a surfaceFieldValue, yPlus), a second time folder as a resumed run's
+    tables = qs.read_postprocessing(os.path.join(DATA, "postProcessing"))
+    assert sorted(tables) == ["outletPressure/surfaceFieldValue.dat", "probes/U", "probes/p", "yPlus/yPlus.dat"]
+    p = tables["probes/p"]
+    assert list(p.columns) == ["time", "probe0", "probe1", "probe2"]
+    assert list(p["time"]) == [0.02, 0.04, 0.06, 0.08, 0.12, 0.14, 0.16]  # 0/ then 0.1/
+    assert p["probe2"][0] == 3.199134 and p.attrs["probes"][1] == (1.2, 0.002, 0.0)
+    u = tables["probes/U"]
+    assert list(u.columns[:4]) == ["time", "probe0_x", "probe0_y", "probe0_z"] and len(u.columns) == 10
+    assert u["probe0_x"][0] == 0.039085597 and u["probe2_z"][0] == -1.0062827e-14
+    outlet = tables["outletPressure/surfaceFieldValue.dat"]
+    assert list(outlet.columns) == ["time", "areaAverage(p)"] and outlet["areaAverage(p)"][0] == 3.20175124
+    yplus = tables["yPlus/yPlus.dat"]
+    assert list(yplus["patch"]) == ["walls"] and yplus["max"][0] == 2.3
+    assert p.attrs["units"]["time"] == "s"
+    with pytest.raises(FileNotFoundError, match="no postProcessing"):
+        qs.read_postprocessing(DATA + "/nothing")

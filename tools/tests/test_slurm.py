@@ -201,3 +201,33 @@ def test_a_slurm_that_is_not_running_is_a_clear_error(cluster, tmp_path):
     assert "--scheduler slurm: submitting the job array failed" in done.stderr
     assert "Unable to contact slurm controller" in done.stderr
     assert not os.path.exists(os.path.join(tmp_path, "study", "output", "study.csv"))
+
+
+def test_a_variant_failing_on_the_cluster_is_reported_with_its_own_error(cluster, tmp_path):
+    # tests/study/test_StudyRuns.cpp's failing variant: the second flux lifts the bed to the
+    # overflow, where "stop" ends the run with quicksand's error
+    folder = tmp_path / "study"
+    folder.mkdir()
+    base = os.path.join(REPOSITORY, "cases", "verification", "bed_expansion")
+    (folder / "study.toml").write_text(f'base = "{base}"\nthreads = 1\ncombine = "zip"\n[parameters]\n'
+                                       '"gate.flux" = [1.380e-3, 2.0e-2]\n"column.sand_overflow" = ["stop", "stop"]\n'
+                                       '[set]\n"output.fields" = false\n"time.end" = 6.0\n')
+    done = study(str(folder / "study.toml"), cluster["env"], "--scheduler", "slurm")
+    assert done.returncode == 1, done.stdout + done.stderr
+    assert "did not finish" in done.stderr
+    rows = table(str(folder / "study.toml")).splitlines()
+    assert ",finished," in rows[1]
+    assert ",failed," in rows[2] and "overflow" in rows[2], rows[2]
+
+
+def test_a_variant_its_check_refuses_stops_the_study_before_anything_is_submitted(cluster, tmp_path):
+    folder = tmp_path / "study"
+    folder.mkdir()
+    base = os.path.join(REPOSITORY, "cases", "deltaresColumnLumped")
+    (folder / "study.toml").write_text(f'base = "{base}"\n[parameters]\n"reservoir.area" = [0.0083, -1.0]\n')
+    done = study(str(folder / "study.toml"), cluster["env"], "--scheduler", "slurm")
+    assert done.returncode == 1
+    assert "1 of 2 variants fail their check" in done.stderr and "reservoir.area" in done.stderr
+    assert not (folder / "output" / "slurm").exists()
+    queued = subprocess.run(["squeue", "--noheader"], capture_output=True, text=True, env=cluster["env"]).stdout
+    assert queued.strip() == ""
