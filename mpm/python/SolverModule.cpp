@@ -14,6 +14,7 @@
 #include <pybind11/pybind11.h>
 #include <pybind11/stl.h>
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -105,6 +106,24 @@ py::dict profileOf(const std::vector<qs::CellRow>& rows) {
     return d;
 }
 
+/// The cells (2D, 3D) as arrays indexed [row][column] in 2D, [row][y][x] in 3D.
+py::dict cellsOf(const qs::SandCells& c) {
+    std::vector<py::ssize_t> shape;
+    for (int a = c.dimension - 1; a >= 0; --a) shape.push_back(static_cast<py::ssize_t>(c.cells[a]));
+    py::array_t<double> porosity(shape), state(shape);
+    std::copy(c.porosity.begin(), c.porosity.end(), porosity.mutable_data());  // NaN where no sand
+    std::transform(c.state.begin(), c.state.end(), state.mutable_data(),  // 0 no sand, 1 solid, 2 fluidised
+                   [](qs::CellSand s) { return static_cast<double>(static_cast<int>(s)); });
+    py::dict d;
+    d["porosity"] = porosity;
+    d["state"] = state;
+    d["base_flux"] = asArray(c.baseFlux, 1);
+    d["h"] = c.h;
+    d["filter_level"] = c.filterLevel;
+    d["base_row"] = c.baseRow;
+    return d;
+}
+
 }  // namespace
 
 PYBIND11_MODULE(quicksand_solver, m) {
@@ -140,6 +159,7 @@ PYBIND11_MODULE(quicksand_solver, m) {
                  return d;
              },
              py::arg("solid"))
+        .def("cells", [](const Session& s) { return cellsOf(s.simulation().sandCells()); })
         .def("write_output", [](Session& s) { s.simulation().writeOutput(); })
         .def("write_checkpoint", [](Session& s) { s.simulation().writeCheckpoint(); })
         .def("finish", [](Session& s) {

@@ -120,6 +120,7 @@ struct Simulation::Run {
     virtual ColumnState state() const = 0;
     virtual std::vector<CellRow> profile() const = 0;
     virtual std::vector<PointFieldValues> pointFields(bool solid) const = 0;
+    virtual SandCells sandCells() const = 0;
     virtual void advanceTo(double end) = 0;
     virtual void writeOutput() = 0;
     virtual void writeCheckpoint() = 0;
@@ -155,6 +156,13 @@ public:
     int dimension() const override { return D; }
     ColumnState state() const override { return solver_->columnState(); }
     std::vector<CellRow> profile() const override { return solver_->profile(); }
+    SandCells sandCells() const override {
+        if constexpr (D == 1) {
+            throw Error("a 1D column's cells are its rows: read them from profile()");
+        } else {
+            return solver_->sandCells();
+        }
+    }
     std::vector<PointFieldValues> pointFields(bool solid) const override {
         std::vector<PointFieldValues> out;
         const auto copy = [&](const auto& values, const FieldSpec& spec) {
@@ -551,6 +559,7 @@ int Simulation::dimension() const { return run_->dimension(); }
 ColumnState Simulation::state() const { return run_->state(); }
 std::vector<CellRow> Simulation::profile() const { return run_->profile(); }
 std::vector<PointFieldValues> Simulation::pointFields(bool solid) const { return run_->pointFields(solid); }
+SandCells Simulation::sandCells() const { return run_->sandCells(); }
 void Simulation::advanceTo(double end) { run_->advanceTo(end); }
 void Simulation::writeOutput() { run_->writeOutput(); }
 void Simulation::writeCheckpoint() { run_->writeCheckpoint(); }

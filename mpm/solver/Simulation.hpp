@@ -50,6 +50,10 @@ public:
     /// The registry's fields of the solid (or liquid) points of this rank (every point on one
     /// rank): what the Python binding hands out as arrays.
     std::vector<PointFieldValues> pointFields(bool solid) const;
+    /// The grid's cells as the pipe survey reads them (physics/Pipes.hpp: the sand's state and
+    /// porosity per cell, the water crossing the filter per column). 2D and 3D; a 1D column
+    /// throws qs::Error (its cells are profile()'s rows).
+    SandCells sandCells() const;
 
     /// Advances to time `end` (s; to the step nearest it), writing the outputs and checkpoints
     /// that fall due on the case's intervals.

@@ -91,6 +91,12 @@ class Simulation:
             raise ValueError(f"points: kind {kind!r}: expected 'solid' or 'liquid'")
         return self._call("points", kind == "solid")
 
+    def cells(self):
+        """The grid's cells (2D, 3D) as the pipe survey reads them: porosity and state (0 no sand,
+        1 solid, 2 fluidised) indexed [row][column] (3D: [row][y][x]), base_flux per column
+        (m3/s), h and filter_level (m). A 1D column raises QuicksandError: use profile()."""
+        return self._call("cells")
+
     def write_output(self):
         self._call("write_output")
 

@@ -42,7 +42,10 @@ def wait_for(condition, seconds, what):
 @pytest.fixture(scope="module")
 def cluster(tmp_path_factory):
     """A one-node Slurm: munged, slurmctld and slurmd on free ports; yields the environment that
-    points Slurm's commands at it."""
+    points Slurm's commands at it. Everything started is stopped, also when a daemon fails."""
+    if not os.path.ismount("/sys/fs/cgroup"):
+        pytest.skip("no cgroup filesystem at /sys/fs/cgroup, which Slurm 22.05's slurmd needs to start (a chroot "
+                    "without /sys, as tools' fresh-machine check is)")
     root = tmp_path_factory.mktemp("slurm")
     for d in ("state", "spool"):
         (root / d).mkdir()
@@ -50,8 +53,27 @@ def cluster(tmp_path_factory):
     key.write_bytes(os.urandom(1024))
     key.chmod(0o400)
     socket_path = root / "munge.socket"
+    started = []
+    try:
+        yield from _cluster(root, key, socket_path, started)
+    finally:
+        env = dict(os.environ, SLURM_CONF=str(root / "slurm.conf"))
+        if "slurmctld" in started:
+            subprocess.run(["scancel", "--user=root"], env=env, capture_output=True)
+        for pid_file in ("slurmd.pid", "slurmctld.pid"):
+            try:
+                os.kill(int((root / pid_file).read_text()), signal.SIGTERM)
+            except (OSError, ValueError):
+                pass
+        time.sleep(1)
+        if "munged" in started:
+            subprocess.run(["munged", "-s", "-S", str(socket_path)], capture_output=True)
+
+
+def _cluster(root, key, socket_path, started):
     subprocess.run(["munged", "--force", "-S", str(socket_path), f"--key-file={key}", f"--log-file={root}/munged.log",
                     f"--pid-file={root}/munged.pid", f"--seed-file={root}/munged.seed"], check=True)
+    started.append("munged")
     host = socket.gethostname().split(".")[0]
     memory = os.sysconf("SC_PAGE_SIZE") * os.sysconf("SC_PHYS_PAGES") // 2**20 // 2
     cores = os.cpu_count() or 1
@@ -87,21 +109,15 @@ NodeName={host} NodeAddr=127.0.0.1 CPUs={cores} RealMemory={memory} State=UNKNOW
 PartitionName=debug Nodes={host} Default=YES MaxTime=INFINITE State=UP
 """)
     env = dict(os.environ, SLURM_CONF=str(conf))
-    subprocess.run(["slurmctld", "-f", str(conf)], check=True, env=env)
-    subprocess.run(["slurmd", "-f", str(conf)], check=True, env=env)
-    try:
-        wait_for(lambda: "idle" in subprocess.run(["sinfo", "--noheader", "-o", "%t"], capture_output=True, text=True,
-                                                  env=env).stdout, 30, "the node to be idle")
-        yield {"env": env, "root": root}
-    finally:
-        subprocess.run(["scancel", "--user=root"], env=env, capture_output=True)
-        for pid_file in ("slurmd.pid", "slurmctld.pid"):
-            try:
-                os.kill(int((root / pid_file).read_text()), signal.SIGTERM)
-            except (OSError, ValueError):
-                pass
-        time.sleep(1)
-        subprocess.run(["munged", "-s", "-S", str(socket_path)], capture_output=True)
+    for daemon in ("slurmctld", "slurmd"):
+        done = subprocess.run([daemon, "-f", str(conf)], env=env, capture_output=True, text=True)
+        if done.returncode != 0:
+            log = (root / f"{daemon}.log").read_text() if (root / f"{daemon}.log").exists() else ""
+            raise AssertionError(f"{daemon} did not start ({done.returncode}): {done.stderr}\n{log[-1500:]}")
+        started.append(daemon)
+    wait_for(lambda: "idle" in subprocess.run(["sinfo", "--noheader", "-o", "%t"], capture_output=True, text=True,
+                                              env=env).stdout, 30, "the node to be idle")
+    yield {"env": env, "root": root}
 
 
 def make_study(folder, end):

@@ -85,3 +85,19 @@ def test_ctrl_c_ends_the_step_writes_the_checkpoint_and_raises_keyboard_interrup
     assert (case / "output" / "checkpoint.h5").exists()
     resumed = solver.Simulation(str(case), {"time.end": 50.0, "output.fields": False}, resume=True)
     assert resumed.time == stopped and resumed.steps == sim.steps
+
+
+def test_the_cells_of_a_2d_run_are_arrays_of_the_grid():
+    stripe = os.path.join(REPOSITORY, "cases", "verification", "loose_stripe")
+    sim = solver.Simulation(stripe, {"time.end": 0.05}, write_files=False)
+    sim.advance_to(0.01)
+    cells = sim.cells()
+    rows, columns = cells["state"].shape
+    assert cells["porosity"].shape == (rows, columns) and len(cells["base_flux"]) == columns
+    sand = cells["state"] > 0
+    assert sand.any() and set(np.unique(cells["state"])) <= {0.0, 1.0, 2.0}
+    assert np.all((cells["porosity"][sand] > 0.25) & (cells["porosity"][sand] < 0.5))
+    # the rows of sand start at the filter
+    assert sand[cells["base_row"]].all() and not sand[: cells["base_row"]].any()
+    with pytest.raises(qs.QuicksandError, match="profile"):
+        solver.Simulation(TERZAGHI, {"time.end": 0.1}, write_files=False).cells()
