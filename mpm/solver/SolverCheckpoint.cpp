@@ -258,6 +258,11 @@ void DoublePointSolver<D>::loadState(const CheckpointData& data) {
     const double stable = stableTimeStep(config_);
     QS_CHECK(std::isfinite(written) && written > 0 && written <= writtenStable * (1 + 1e-12),
              "entry 'dt' is " << written << " s, above the stable step " << writtenStable << " s" << kNotThisCase);
+    // the run's time is its step count times its step (a running sum before 2026-12-07, within
+    // 1e-6 after 1e8 steps): a damaged step shows against the two
+    QS_CHECK(std::abs(double(steps_) * written - time_) <= 1e-6 * std::max(time_, written),
+             "entries 'dt' (" << written << " s), 'steps' (" << steps_ << ") and 'time' (" << time_
+                              << " s) disagree" << kNotThisCase);
     QS_CHECK(std::abs(writtenStable - stable) <= 1e-12 * stable,
              "the checkpoint was written with a stable step of " << writtenStable << " s, the case now gives "
                                                                  << stable << " s: grid, material or water data changed");

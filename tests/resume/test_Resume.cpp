@@ -338,6 +338,15 @@ TEST(Resume, ACheckpointThatNoStepCouldTakeIsRefusedNamingWhy) {
     const auto third = makeReservoirModel(c);
     DoublePointSolver<1> again(c, *third);
     EXPECT_NO_THROW(again.loadState(good));
+    // a damaged step: the resumed run keeps the checkpoint's step (solver/TimeLattice.hpp), whose
+    // product with the step count is the time
+    for (int k = 0; k < 10; ++k) solver.step();
+    CheckpointData stepped;
+    solver.saveState(stepped);
+    EXPECT_EQ(loadingMessage(c, stepped), "accepted");
+    CheckpointData tiny = stepped;
+    tiny.putScalar("dt", stepped.scalar("dt") * 1e-3);
+    EXPECT_NE(loadingMessage(c, tiny).find("entries 'dt'"), std::string::npos) << loadingMessage(c, tiny);
 }
 
 TEST(Resume, ACheckpointWrittenBeforeAPICStillLoads) {
