@@ -68,21 +68,7 @@ def fail_key(path, key, what):
     raise StudyError(f"{path}: key '{key}': {what}")
 
 
-def toml_value(v):
-    """How a value is written after --set KEY= (TOML)."""
-    if isinstance(v, bool):
-        return "true" if v else "false"
-    if isinstance(v, int):
-        return str(v)
-    if isinstance(v, float):
-        return repr(v)
-    if isinstance(v, str):
-        return json.dumps(v)
-    if isinstance(v, list):
-        return "[" + ", ".join(toml_value(x) for x in v) + "]"
-    if isinstance(v, dict):
-        return "{ " + ", ".join(f"{k} = {toml_value(x)}" for k, x in v.items()) + " }"
-    raise TypeError(f"cannot write {v!r} as TOML")
+toml_value = running.toml_value  # how a value is written after --set KEY= (TOML)
 
 
 def values_of(path, key, spec):
