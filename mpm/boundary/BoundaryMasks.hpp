@@ -11,11 +11,14 @@
 //    in 2D, which then refilled what was not empty: the liquid ledger drifted by 1e-4 of the
 //    inflow in 16 s with two gravels side by side; held, it stays within 1e-5.) A closed gate is a
 //    smooth wall;
-//  - a rigid skeleton: every solid component.
+//  - a rigid skeleton: every solid component;
+//  - rough walls (column.wall_friction_angle > 0): the grains' tangential components by Coulomb
+//    friction, solved with the node (boundary/RoughWalls.hpp).
 // Built once; the nodal update reads the flags. Also knows each gate node's share of the area.
 #include <vector>
 
 #include "grid/Grid.hpp"
+#include "boundary/RoughWalls.hpp"
 #include "case/CaseConfig.hpp"
 
 namespace qs {
@@ -26,6 +29,7 @@ struct BoundaryMasks {
     std::vector<char> liquidFixed;  ///< [node][axis]
     std::vector<Index> gateNodes;   ///< the bottom node row (the gate plane)
     std::vector<Index> filterNodes; ///< the node row of the filter plane
+    RoughWalls<D> roughWalls;       ///< the lateral walls' friction on the grains (none if smooth)
 
     void build(const Grid<D>& grid, const CaseConfig& config) {
         const Index nn = grid.numNodes();
@@ -54,6 +58,7 @@ struct BoundaryMasks {
             if (config.initial.rigidSkeleton)
                 for (int d = 0; d < D; ++d) solidFixed[i * D + d] = 1;
         }
+        roughWalls.build(grid, config);
     }
 };
 

@@ -44,6 +44,10 @@ struct ColumnConfig {
     std::optional<double> overflowLevel;  ///< m, outflow level (>= waterLevel); none: no outflow
     SandOverflow sandOverflow = SandOverflow::Carry;  ///< sand reaching the overflow level
     double top = 0.0;                  ///< m, top of the grid (> overflow and water levels)
+    /// degrees, delta: the sand's friction angle on the lateral walls (Coulomb, tau <= tan(delta)
+    /// sigma'_n; boundary/RoughWalls.hpp); 0 is a smooth wall. 2D and 3D only; in axisymmetry the
+    /// outer wall (the axis stays a line of symmetry)
+    double wallFrictionAngle = 0.0;
 };
 
 struct PermeabilityConfig {
@@ -155,6 +159,10 @@ struct InitialConfig {
     bool undrainedSurcharge = false;   ///< start from the undrained state under the surcharge
     double gravityStageDuration = 0.0; ///< s, quasi-static stage before t = 0 (0: none)
     double gravityStageDamping = 0.05; ///< -, local damping alpha in that stage
+    /// s, the grains' buoyant weight rises linearly from zero over this time at the stage's start
+    /// (a quasi-static loading, as a silo fills; 0: the whole weight at once). The water weighs its
+    /// whole weight throughout, so the pore water stays hydrostatic.
+    double gravityStageRamp = 0.0;
     PorosityFieldConfig porosityField; ///< a random porosity field over the sand (off by default)
 };
 

@@ -42,7 +42,7 @@ constexpr const char* kRootKeys[] = {"title",  "grid",      "column",  "material
                                      "output"};
 constexpr const char* kGridKeys[] = {"dimension", "cell_size", "width", "cross_section_area",
                                      "shape_functions", "geometry"};
-constexpr const char* kColumnKeys[] = {"chamber_height", "water_level", "overflow_level", "sand_overflow", "top"};
+constexpr const char* kColumnKeys[] = {"chamber_height", "water_level", "overflow_level", "sand_overflow", "top", "wall_friction_angle"};
 constexpr const char* kMaterialKeys[] = {
     "model",          "grain_density", "porosity",       "max_porosity",    "min_porosity",
     "youngs_modulus", "poisson_ratio", "friction_angle", "dilatancy_angle", "cohesion",
@@ -69,7 +69,7 @@ constexpr const char* kLiquidKeys[] = {"density",
                                        "pic_damping_time"};
 constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
 constexpr const char* kInitialKeys[] = {"state", "stress", "rigid_skeleton", "filter_velocity", "undrained_surcharge",
-                                        "gravity_stage_duration", "gravity_stage_damping", "porosity_field"};
+                                        "gravity_stage_duration", "gravity_stage_damping", "gravity_stage_ramp", "porosity_field"};
 constexpr const char* kPorosityFieldKeys[] = {"standard_deviation", "correlation_length", "seed", "mirror"};
 constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
 constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
@@ -492,6 +492,10 @@ private:
         col.sandOverflow = s.choice("sand_overflow", SandOverflow::Carry, kSandOverflowOptions);
         col.top = s.requiredNumber("top", positive("m"),
                                    "top of the grid, above water and overflow levels");
+        if (c_.grid.dimension == 1)
+            s.forbid("wall_friction_angle", "a 1D column has no lateral walls (grid.dimension = 1)");
+        else
+            col.wallFrictionAngle = s.optionalNumber("wall_friction_angle", 0.0, between(0, false, 90, true, "deg"));
     }
 
     void readPoints(const Section& root) {
@@ -532,6 +536,9 @@ private:
         i.gravityStageDuration = s.optionalNumber("gravity_stage_duration", 0.0, nonNegative("s"));
         i.gravityStageDamping =
             s.optionalNumber("gravity_stage_damping", 0.05, between(0, false, 1, true));
+        i.gravityStageRamp = s.optionalNumber(
+            "gravity_stage_ramp", 0.0, between(0, false, i.gravityStageDuration, false, "s"),
+            "time over which the grains' buoyant weight rises from zero, within gravity_stage_duration");
         if (s.has("porosity_field")) {
             if (i.state == InitialState::Fluidised)
                 s.fail("porosity_field", "a bed that starts fluidised has no porosity of its own to vary "

@@ -186,7 +186,12 @@ void DoublePointSolver<D>::runGravityStage() {
     dampingAlpha_ = config_.initial.gravityStageDamping;
     const Real t0 = time_;
     const auto saved = reservoir_.saveState();
-    while (time_ - t0 < duration) step();
+    const Real ramp = config_.initial.gravityStageRamp;
+    while (time_ - t0 < duration) {
+        weightShare_ = ramp > 0 ? std::min(Real(1), (time_ - t0) / ramp) : Real(1);
+        step();
+    }
+    weightShare_ = 1;
     reservoir_.restoreState(saved);
     damping_ = false;
     // the dynamic stage starts at rest at t = 0

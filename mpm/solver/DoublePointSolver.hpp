@@ -247,6 +247,7 @@ private:
     long steps_ = 0;
     bool damping_ = false;
     Real dampingAlpha_ = 0;
+    Real weightShare_ = 1;           ///< the share of the grains' buoyant weight loaded (the gravity stage's ramp)
     Real gateFlux_ = 0, gatePressure_ = 0;
     Real cumulativeInflow_ = 0, outflowVolume_ = 0;
     Real solidOutflowMass_ = 0;      ///< kg of grains carried out over the overflow

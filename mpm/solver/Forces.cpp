@@ -28,6 +28,17 @@ void DoublePointSolver<D>::computeForces() {
 template <int D>
 void DoublePointSolver<D>::gravityForces() {
     const Real g = config_.gravity;
+    if (weightShare_ < 1) {
+        // the gravity stage's ramp: the grains weigh what the water they displace weighs, plus the
+        // loaded share f of their buoyant weight, f M_S g + (1 - f) rho_L V_grains g (a density
+        // rising from the water's to their own); the water weighs all its weight, and stays at rest
+        const Real f = weightShare_, rhoL = config_.liquid.density;
+        forAll(grid_.numNodes(), [&](Index i) {
+            nodes_.forceS[i * D + D - 1] -= (f * nodes_.massS[i] + (1 - f) * rhoL * sums_.grainVolume[i]) * g;
+            nodes_.forceL[i * D + D - 1] -= nodes_.massL[i] * g;
+        });
+        return;
+    }
     forAll(grid_.numNodes(), [&](Index i) {
         nodes_.forceS[i * D + D - 1] -= nodes_.massS[i] * g;
         nodes_.forceL[i * D + D - 1] -= nodes_.massL[i] * g;

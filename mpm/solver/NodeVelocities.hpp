@@ -8,71 +8,11 @@
 #include <cmath>
 
 #include "core/ForAll.hpp"
+#include "solver/NodeComponent.hpp"
+#include "solver/PressureForce.hpp"
 #include "solver/TimeIntegrator.hpp"
 
 namespace qs {
-
-/// One node component's masses, drag and boundary flags: what its velocities depend on besides
-/// the predictors.
-struct NodeComponent {
-    Real massS = 0, massL = 0;  ///< kg
-    Real drag = 0;              ///< kg/s, Q_i
-    Real tubeLoss = 0;          ///< kg/s, c = R A_gate A_i at a 1D gate's vertical component, else 0
-    bool solidHeld = false, liquidHeld = false;
-    Real heldLiquidVelocity = 0;  ///< m/s, the liquid's prescribed value where it is held
-};
-
-struct PhaseVelocities { Real solid = 0, liquid = 0; };
-
-/// The component's end-of-step velocities from the drag-free predictors vS1, vL1 (ignored for a
-/// phase without mass). Linear in (vS1, vL1, heldLiquidVelocity): the semi-implicit scheme takes
-/// its response to a pressure force from it (componentResponse, below).
-inline PhaseVelocities solveComponent(const NodeComponent& n, Real dt, Real vS1, Real vL1) {
-    const Real mS = n.massS, mL = n.massL, Q = n.drag;
-    Real vS = 0, vL = 0;
-    if (mS > 0 && mL > 0) {
-        if (n.solidHeld && n.liquidHeld) {
-            vS = 0; vL = n.heldLiquidVelocity;
-        } else if (n.solidHeld) {
-            // solid held: solve the liquid alone (solving the pair and overwriting one
-            // afterwards loses momentum)
-            vS = 0;
-            vL = (mL * vL1) / (mL + dt * Q + dt * n.tubeLoss);
-        } else if (n.liquidHeld) {
-            vL = n.heldLiquidVelocity;
-            vS = (mS * vS1 + dt * Q * vL) / (mS + dt * Q);
-        } else {
-            // drag keeps M_L v_L + M_S v_S and relaxes w = v_L - v_S
-            const Real M = mL + mS;
-            const Real vm = (mL * vL1 + mS * vS1) / M;
-            const Real w = (vL1 - vS1) / (1 + dt * Q * (1 / mL + 1 / mS));
-            vL = vm + mS * w / M;
-            vS = vm - mL * w / M;
-        }
-    } else if (mL > 0) {
-        vL = n.liquidHeld ? n.heldLiquidVelocity : mL * vL1 / (mL + dt * n.tubeLoss);
-    } else if (mS > 0) {
-        vS = n.solidHeld ? 0.0 : vS1;
-    }
-    return {vS, vL};
-}
-
-/// The component's velocities per unit impulse on the mixture, shared as (1 - n) on the solid
-/// and n on the liquid, nothing prescribed: solveComponent with vS1 = (1 - n) / M_S,
-/// vL1 = n / M_L and no held velocity (the semi-implicit step's response to a pressure force).
-/// Where both phases move, its closed form in two divisions instead of solveComponent's eight:
-/// the relaxed slip w = v_L - v_S with numerator and denominator times M_S M_L. There, as in
-/// solveComponent, the tube's loss plays no part: a gate node's solid is held.
-inline PhaseVelocities componentResponse(NodeComponent c, Real dt, Real porosity) {
-    c.heldLiquidVelocity = 0;
-    const Real mS = c.massS, mL = c.massL;
-    if (mS > 0 && mL > 0 && !c.solidHeld && !c.liquidHeld) {
-        const Real M = mS + mL;
-        const Real w = (porosity * mS - (1 - porosity) * mL) / (mS * mL + dt * c.drag * M);
-        return {(1 - mL * w) / M, (1 + mS * w) / M};
-    }
-    return solveComponent(c, dt, mS > 0 ? (1 - porosity) / mS : 0.0, mL > 0 ? porosity / mL : 0.0);
-}
 
 /// Node i's component a as solveNodes sees it this step.
 template <int D>
@@ -112,26 +52,40 @@ Real solveNodes(const StepContext<D>& ctx, const StepInputs& in, Visit&& visit) 
     const Real dt = in.dt;
     forAll(ctx.grid.numNodes(), [&](Index i) {
         const Real mS = nodes.massS[i], mL = nodes.massL[i];
-        Real w2 = 0;
+        Real vS1[D], vL1[D], vL0[D];
+        NodeComponent component[D];
         for (int d = 0; d < D; ++d) {
             const Index k = i * D + d;
             const Real vS0 = mS > 0 ? nodes.momS[k] / mS : 0.0;
-            const Real vL0 = mL > 0 ? nodes.momL[k] / mL : 0.0;
+            vL0[d] = mL > 0 ? nodes.momL[k] / mL : 0.0;
             Real fS = nodes.forceS[k], fL = nodes.forceL[k];
             if (in.damping) {
                 // local damping, gravity stage only: F <- F - alpha |F| sign(v)
                 fS -= in.dampingAlpha * std::abs(fS) * (vS0 > 0 ? 1 : (vS0 < 0 ? -1 : 0));
-                fL -= in.dampingAlpha * std::abs(fL) * (vL0 > 0 ? 1 : (vL0 < 0 ? -1 : 0));
+                fL -= in.dampingAlpha * std::abs(fL) * (vL0[d] > 0 ? 1 : (vL0[d] < 0 ? -1 : 0));
             }
-            const Real vS1 = mS > 0 ? vS0 + dt * fS / mS : 0.0;  // drag-free predictors
-            const Real vL1 = mL > 0 ? vL0 + dt * fL / mL : 0.0;
-            const NodeComponent component = nodeComponent(ctx, in, i, d);
-            const PhaseVelocities v = solveComponent(component, dt, vS1, vL1);
-            visit(i, d, component);
-            nodes.velS[k] = v.solid;
-            nodes.velL[k] = v.liquid;
-            nodes.velLIncrement[k] = v.liquid - vL0;  // what the FLIP update hands the liquid points
-            w2 += (v.liquid - v.solid) * (v.liquid - v.solid);
+            vS1[d] = mS > 0 ? vS0 + dt * fS / mS : 0.0;  // drag-free predictors
+            vL1[d] = mL > 0 ? vL0[d] + dt * fL / mL : 0.0;
+            component[d] = nodeComponent(ctx, in, i, d);
+        }
+        PhaseVelocities v[D];
+        if (ctx.masks.roughWalls.rough(i) && mS > 0) {
+            // the grains' push on the wall, the pore pressure's share off (boundary/RoughWalls.hpp)
+            Real pL[D], pS[D], push[D];
+            nodePressureForce(ctx.grid, ctx.water, nodes.porosity[i], i, pL, pS);
+            for (int d = 0; d < D; ++d) push[d] = mS * vS1[d] / dt - pS[d];
+            ctx.masks.roughWalls.solve(i, dt, push, component, vS1, vL1, v);
+        } else {
+            for (int d = 0; d < D; ++d) v[d] = solveComponent(component[d], dt, vS1[d], vL1[d]);
+        }
+        Real w2 = 0;
+        for (int d = 0; d < D; ++d) {
+            const Index k = i * D + d;
+            visit(i, d, component[d]);
+            nodes.velS[k] = v[d].solid;
+            nodes.velL[k] = v[d].liquid;
+            nodes.velLIncrement[k] = v[d].liquid - vL0[d];  // what the FLIP update hands the liquid points
+            w2 += (v[d].liquid - v[d].solid) * (v[d].liquid - v[d].solid);
         }
         nodes.relSpeed[i] = (mS > 0 && mL > 0) ? std::sqrt(w2) : 0.0;
     });

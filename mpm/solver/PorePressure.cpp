@@ -9,6 +9,7 @@
 
 #include "physics/Cavitation.hpp"
 #include "solver/DoublePointSolver.hpp"
+#include "solver/PressureForce.hpp"
 #include "solver/Parallel.hpp"
 
 namespace qs {
@@ -98,17 +99,8 @@ void DoublePointSolver<D>::pressureForces() {
     // (grid/Grid.hpp, divergenceWeight: in axisymmetry the divergence has the hoop part Phi_r / r,
     // and so its transpose a radial force; a uniform pressure then pushes no node sideways)
     forAll(grid_.numNodes(), [&](Index i) {
-        Real fL[D] = {}, fS[D] = {};
-        const Real ni = nodes_.porosity[i];
-        grid_.forEachCellOfNode(i, [&](Index cell, int corner) {
-            const Real pV = water_.pressure[cell] * water_.weight[cell];
-            if (pV == 0) return;
-            for (int a = 0; a < D; ++a) {
-                const Real gN = grid_.divergenceWeight(cell, corner, a);
-                fL[a] += pV * ni * gN;
-                fS[a] += pV * (1 - ni) * gN;
-            }
-        });
+        Real fL[D], fS[D];
+        nodePressureForce(grid_, water_, nodes_.porosity[i], i, fL, fS);
         for (int a = 0; a < D; ++a) {
             nodes_.forceL[i * D + a] += fL[a];
             nodes_.forceS[i * D + a] += fS[a];

@@ -731,5 +731,30 @@ TEST(CaseLoader, TheExampleOfTheCaseFormatPageLoads) {
     EXPECT_EQ(c.reservoir.kind, ReservoirKind::Lumped);
 }
 
+TEST(CaseLoader, WallFrictionNeedsLateralWallsAndAnAngleBelowNinetyDegrees) {
+    // kMinimal is 1D: no lateral walls to be rough
+    const std::string oneD = replaced(kMinimal, "top = 0.2", "top = 0.2\nwall_friction_angle = 20");
+    const std::string what = expectError(oneD, "column.wall_friction_angle", lineOf(oneD, "wall_friction_angle"));
+    EXPECT_TRUE(contains(what, "no lateral walls")) << what;
+    const std::string twoD = replaced(kMinimal, "cell_size = 0.01", "dimension = 2\nwidth = 0.05\ncell_size = 0.01");
+    for (const char* angle : {"-5", "90", "120"}) {
+        const std::string text = replaced(twoD, "top = 0.2", std::string("top = 0.2\nwall_friction_angle = ") + angle);
+        const std::string bad = expectError(text, "column.wall_friction_angle", lineOf(text, "wall_friction_angle"));
+        EXPECT_TRUE(contains(bad, "deg")) << bad;
+    }
+    const CaseConfig rough = parseCase(replaced(twoD, "top = 0.2", "top = 0.2\nwall_friction_angle = 30"), kFile);
+    EXPECT_DOUBLE_EQ(rough.column.wallFrictionAngle, 30.0);
+    EXPECT_DOUBLE_EQ(parseCase(twoD, kFile).column.wallFrictionAngle, 0.0);  // smooth by default
+}
+
+TEST(CaseLoader, TheGravityStagesRampLiesWithinTheStage) {
+    const std::string stage = replaced(kMinimal, "[time]\n", "[initial]\ngravity_stage_duration = 0.2\n"
+                                                           "gravity_stage_ramp = 0.3\n[time]\n");
+    const std::string what = expectError(stage, "initial.gravity_stage_ramp", lineOf(stage, "gravity_stage_ramp"));
+    EXPECT_TRUE(contains(what, "0.2")) << what;
+    const CaseConfig ramped = parseCase(replaced(stage, "gravity_stage_ramp = 0.3", "gravity_stage_ramp = 0.15"), kFile);
+    EXPECT_DOUBLE_EQ(ramped.initial.gravityStageRamp, 0.15);
+}
+
 }  // namespace
 }  // namespace qs
