@@ -109,6 +109,17 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         << config.column.waterLevel << " m";
     if (config.column.overflowLevel) out << ", overflow " << *config.column.overflowLevel << " m";
     out << ", grid top " << config.column.top << " m\n";
+    if (config.grid.dimension > 1) {
+        const double delta = config.column.wallFrictionAngle;
+        if (delta > 0)
+            out << "walls: rough, sand on wall friction angle " << delta << " deg (mu = " << std::tan(delta * kPi / 180)
+                << ")" << (config.grid.geometry == GridGeometry::Axisymmetric ? ", the outer wall" : "") << "\n";
+        else
+            out << "walls: smooth (column.wall_friction_angle = 0)\n";
+    }
+    if (config.initial.gravityStageRamp > 0)
+        out << "gravity stage: " << config.initial.gravityStageDuration << " s, the grains' buoyant weight ramped over "
+            << config.initial.gravityStageRamp << " s, local damping " << config.initial.gravityStageDamping << "\n";
     if (const auto& f = config.initial.porosityField; f.enabled)
         out << "random porosity field: n0 + " << f.standardDeviation << " g(x), correlation length "
             << f.correlationLength << " m, seed " << f.seed << " (clipped to [n_min, n_max - 0.001])\n";

@@ -232,6 +232,14 @@ TEST(ColumnOnRanks, The3DRandomBedStepsAsOnOneRank) {
                                      "grid.cross_section_area=0.04981824"}));
 }
 
+TEST(ColumnOnRanks, RoughWallsStepAsOnOneRank) {
+    // each wall on its own rank (boundary/RoughWalls.hpp): the wall node's pore-pressure share
+    // is read from the cells around it, the ghost ones included
+    compareWithOneRank<2>(randomBed({"grid.width=0.1488", "column.wall_friction_angle=30"}));
+    compareWithOneRank<3>(randomBed({"grid.dimension=3", "grid.cell_size=0.0186", "grid.width=0.2232",
+                                     "grid.cross_section_area=0.04981824", "column.wall_friction_angle=30"}));
+}
+
 TEST(ColumnOnRanks, UGimpStepsAsOnOneRank) {
     compareWithOneRank<2>(randomBed({"grid.width=0.1488", "grid.shape_functions=\"gimp\""}));
 }
