@@ -150,6 +150,15 @@ struct PorosityFieldConfig {
     bool mirror = false;             ///< the field reflected across x = width/2 (2D plane, 3D)
 };
 
+/// A sinusoidal porosity perturbation, n0 + amplitude sin(2 pi s / wavelength), s the height above
+/// the filter (vertical) or x (lateral): the linear stability problem (physics.md section 7)
+struct PorosityWaveConfig {
+    bool enabled = false;
+    double amplitude = 0.0;          ///< -, of the porosity
+    double wavelength = 0.0;         ///< m
+    bool lateral = false;            ///< along x (2D, 3D) instead of up the column
+};
+
 struct InitialConfig {
     InitialState state = InitialState::Solid;  ///< Fluidised: a suspension, n0 >= n_max allowed
     InitialStress stress = InitialStress::K0;
@@ -164,6 +173,7 @@ struct InitialConfig {
     /// whole weight throughout, so the pore water stays hydrostatic.
     double gravityStageRamp = 0.0;
     PorosityFieldConfig porosityField; ///< a random porosity field over the sand (off by default)
+    PorosityWaveConfig porosityWave;   ///< a sinusoidal porosity perturbation (off by default)
 };
 
 struct LoadConfig {

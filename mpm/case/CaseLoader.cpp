@@ -69,8 +69,9 @@ constexpr const char* kLiquidKeys[] = {"density",
                                        "pic_damping_time"};
 constexpr const char* kPointsKeys[] = {"solid_per_cell", "liquid_per_cell"};
 constexpr const char* kInitialKeys[] = {"state", "stress", "rigid_skeleton", "filter_velocity", "undrained_surcharge",
-                                        "gravity_stage_duration", "gravity_stage_damping", "gravity_stage_ramp", "porosity_field"};
+                                        "gravity_stage_duration", "gravity_stage_damping", "gravity_stage_ramp", "porosity_field", "porosity_wave"};
 constexpr const char* kPorosityFieldKeys[] = {"standard_deviation", "correlation_length", "seed", "mirror"};
+constexpr const char* kPorosityWaveKeys[] = {"amplitude", "wavelength", "direction"};
 constexpr const char* kLoadsKeys[] = {"surcharge", "surcharge_ramp_time"};
 constexpr const char* kGateKeys[] = {"mode", "flux", "flux_ramp_time"};
 constexpr const char* kReservoirKeys[] = {
@@ -94,6 +95,7 @@ const TableKeys kLiquid = tableKeys("[liquid]", kLiquidKeys);
 const TableKeys kPoints = tableKeys("[points]", kPointsKeys);
 const TableKeys kInitial = tableKeys("[initial]", kInitialKeys);
 const TableKeys kPorosityField = tableKeys("[initial.porosity_field]", kPorosityFieldKeys);
+const TableKeys kPorosityWave = tableKeys("[initial.porosity_wave]", kPorosityWaveKeys);
 const TableKeys kLoads = tableKeys("[loads]", kLoadsKeys);
 const TableKeys kGate = tableKeys("[gate]", kGateKeys);
 const TableKeys kReservoir = tableKeys("[reservoir]", kReservoirKeys);
@@ -105,7 +107,7 @@ const TableKeys kOutput = tableKeys("[output]", kOutputKeys);
 const TableCatalogue kAllTables = {&kRoot,  &kGrid,      &kColumn,   &kMaterial, &kPermeability,
                                    &kLayer, &kLiquid,    &kPoints,   &kInitial,  &kLoads,
                                    &kGate,  &kReservoir, &kCoupling, &kTime,     &kMonitor,
-                                   &kOutput, &kPorosityField};
+                                   &kOutput, &kPorosityField, &kPorosityWave};
 
 /// Largest intrinsic permeability accepted (m2). Clean gravel is ~1e-7 m2; larger values are
 /// almost always a hydraulic conductivity in m/s typed where kappa in m2 belongs.
@@ -134,6 +136,7 @@ const Options<InitialStress> kStressOptions = {{"k0", InitialStress::K0},
                                                {"zero", InitialStress::Zero}};
 const Options<GateMode> kGateOptions = {
     {"pressure", GateMode::Pressure}, {"flux", GateMode::Flux}, {"closed", GateMode::Closed}};
+const Options<bool> kWaveDirectionOptions = {{"vertical", false}, {"lateral", true}};
 const Options<SandOverflow> kSandOverflowOptions = {{"carry", SandOverflow::Carry},
                                                     {"stop", SandOverflow::Stop}};
 const Options<TubeFriction> kTubeFrictionOptions = {{"smooth_pipe", TubeFriction::SmoothPipe},
@@ -556,6 +559,17 @@ private:
                 f.fail("mirror", "a mirror image across the column's mid-plane x = width/2 needs a 2D plane or a 3D grid "
                                  "(this one is " + std::string(c_.grid.dimension == 1 ? "1D" : "axisymmetric") +
                                      "); remove mirror");
+        }
+        if (s.has("porosity_wave")) {
+            const Section f = s.subsection("porosity_wave", kPorosityWave, true);
+            PorosityWaveConfig& w = i.porosityWave;
+            w.enabled = true;
+            w.amplitude = f.requiredNumber("amplitude", between(0, true, 0.05, false),
+                                           "amplitude of the porosity's sine (-), e.g. 1e-3");
+            w.wavelength = f.requiredNumber("wavelength", positive("m"), "the sine's wavelength, m");
+            w.lateral = f.choice("direction", false, kWaveDirectionOptions);
+            if (w.lateral && c_.grid.dimension == 1)
+                f.fail("direction", "a lateral wave needs a 2D or 3D grid (grid.dimension = 1)");
         }
     }
 

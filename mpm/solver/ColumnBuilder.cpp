@@ -8,6 +8,7 @@
 #include "materials/StressTensor.hpp"
 #include "physics/DragLaw.hpp"
 #include "physics/Permeability.hpp"
+#include "core/Constants.hpp"
 #include "physics/RandomPorosityField.hpp"
 #include "solver/DoublePointSolver.hpp"
 
@@ -134,11 +135,22 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
     const std::optional<RandomPorosityField> randomField =
         field.enabled ? std::optional<RandomPorosityField>(std::in_place, D, field.correlationLength, field.seed)
                       : std::nullopt;
+    // A porosity wave (the stability problem, physics.md section 7) adds a sine; a suspension
+    // (fluidised start) is not clipped, its porosity being above n_max anyway.
+    const PorosityWaveConfig& wave = config.initial.porosityWave;
     auto porosityAt = [&](const MaterialConfig& mc, const Vec<D>& x) -> Real {
-        if (!randomField) return mc.porosity;
-        Vec<D> at = x;
-        if (field.mirror) at[0] = config.grid.width - x[0];  // the same bed seen from the other side
-        const Real n = mc.porosity + field.standardDeviation * randomField->unitField(&at[0]);
+        Real n = mc.porosity;
+        if (wave.enabled) {
+            const Real s = wave.lateral ? x[0] : x[D - 1] - config.filterLevel();
+            n += wave.amplitude * std::sin(2 * kPi * s / wave.wavelength);
+            if (fluidised) return n;
+        }
+        if (!randomField && !wave.enabled) return n;
+        if (randomField) {
+            Vec<D> at = x;
+            if (field.mirror) at[0] = config.grid.width - x[0];  // the same bed seen from the other side
+            n += field.standardDeviation * randomField->unitField(&at[0]);
+        }
         return std::clamp(n, Real(mc.minPorosity), Real(mc.maxPorosity - 0.001));
     };
     Real chamberExcess = 0;  // excess pore pressure at the filter, shared by the chamber water

@@ -103,11 +103,13 @@ BENCHMARK_TEMPLATE(BM_StepLateral, 3)->Name("BM_Step3D")->Arg(49)->Arg(484)->Arg
 /// The piping cases as shipped (cases/piping2D, cases/piping3D: random beds, Mohr-Coulomb, the
 /// lumped feed at i0 = 1.5), from their first steps. Counter sim_seconds_per_hour: the simulated
 /// time one hour of wall time reaches at this speed, the figure the step-size work is measured by
-/// (docs/performance.md, "Piping").
+/// (docs/performance.md, "Piping"). /0 as shipped (smooth walls), /1 with rough walls
+/// (column.wall_friction_angle = 30 deg, boundary/RoughWalls.hpp): the walls' share of the step.
 template <int D>
 void BM_Piping(benchmark::State& state) {
-    const qs::CaseConfig c =
+    qs::CaseConfig c =
         qs::loadCase(std::string(QUICKSAND_SOURCE_DIR) + (D == 2 ? "/cases/piping2D" : "/cases/piping3D"));
+    if (state.range(0) == 1) c.column.wallFrictionAngle = 30;
     auto reservoir = qs::makeReservoirModel(c);
     qs::DoublePointSolver<D> solver(c, *reservoir);
     for (int k = 0; k < 20; ++k) solver.step();
@@ -122,8 +124,8 @@ void BM_Piping(benchmark::State& state) {
     state.counters["points"] = static_cast<double>(solver.solid().size() + solver.liquid().size());
     state.counters["sim_seconds_per_hour"] = benchmark::Counter(3600 * simulated, benchmark::Counter::kIsRate);
 }
-BENCHMARK_TEMPLATE(BM_Piping, 2)->Name("BM_Piping2D")->Unit(benchmark::kMicrosecond)->MinTime(2.0);
-BENCHMARK_TEMPLATE(BM_Piping, 3)->Name("BM_Piping3D")->Unit(benchmark::kMillisecond)->MinTime(2.0);
+BENCHMARK_TEMPLATE(BM_Piping, 2)->Name("BM_Piping2D")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond)->MinTime(2.0);
+BENCHMARK_TEMPLATE(BM_Piping, 3)->Name("BM_Piping3D")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
 /// The parallel regions of one step of BM_Step2D/50 and BM_Step3D/49 (callgrind's count of calls
 /// to GOMP_parallel over 60 steps: 1605, with the set-up's).

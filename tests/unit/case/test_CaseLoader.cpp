@@ -756,5 +756,22 @@ TEST(CaseLoader, TheGravityStagesRampLiesWithinTheStage) {
     EXPECT_DOUBLE_EQ(ramped.initial.gravityStageRamp, 0.15);
 }
 
+TEST(CaseLoader, APorosityWaveNeedsAnAmplitudeAWavelengthAndLateralWalls) {
+    const std::string wave = replaced(kMinimal, "[time]\n", "[initial.porosity_wave]\namplitude = 1e-3\n"
+                                                          "wavelength = 0.05\n[time]\n");
+    const CaseConfig c = parseCase(wave, kFile);
+    EXPECT_TRUE(c.initial.porosityWave.enabled);
+    EXPECT_DOUBLE_EQ(c.initial.porosityWave.amplitude, 1e-3);
+    EXPECT_DOUBLE_EQ(c.initial.porosityWave.wavelength, 0.05);
+    EXPECT_FALSE(c.initial.porosityWave.lateral);  // up the column by default
+    const std::string lateral = replaced(wave, "wavelength = 0.05", "wavelength = 0.05\ndirection = \"lateral\"");
+    const std::string what = expectError(lateral, "initial.porosity_wave.direction", lineOf(lateral, "direction"));
+    EXPECT_TRUE(contains(what, "2D or 3D")) << what;
+    const std::string big = replaced(wave, "amplitude = 1e-3", "amplitude = 0.2");
+    expectError(big, "initial.porosity_wave.amplitude", lineOf(big, "amplitude"));
+    const std::string none = replaced(wave, "wavelength = 0.05\n", "");
+    expectError(none, "initial.porosity_wave.wavelength", lineOf(none, "[initial.porosity_wave]"));
+}
+
 }  // namespace
 }  // namespace qs
