@@ -151,7 +151,8 @@ struct PorosityFieldConfig {
 };
 
 /// A sinusoidal porosity perturbation, n0 + amplitude sin(2 pi s / wavelength), s the height above
-/// the filter (vertical) or x (lateral): the linear stability problem (physics.md section 7)
+/// the filter (vertical), or n0 + amplitude cos(2 pi x / wavelength) (lateral: symmetric about the
+/// walls): the linear stability problem (physics.md section 7)
 struct PorosityWaveConfig {
     bool enabled = false;
     double amplitude = 0.0;          ///< -, of the porosity

@@ -141,8 +141,9 @@ void buildColumn(const CaseConfig& config, const Grid<D>& grid,
     auto porosityAt = [&](const MaterialConfig& mc, const Vec<D>& x) -> Real {
         Real n = mc.porosity;
         if (wave.enabled) {
-            const Real s = wave.lateral ? x[0] : x[D - 1] - config.filterLevel();
-            n += wave.amplitude * std::sin(2 * kPi * s / wave.wavelength);
+            // across the column a cosine, symmetric about the smooth walls (planes of symmetry)
+            const Real phase = 2 * kPi * (wave.lateral ? x[0] : x[D - 1] - config.filterLevel()) / wave.wavelength;
+            n += wave.amplitude * (wave.lateral ? std::cos(phase) : std::sin(phase));
             if (fluidised) return n;
         }
         if (!randomField && !wave.enabled) return n;
