@@ -2,24 +2,12 @@
 // and 9 (P0 data, Kozeny-Carman from D = 0.261 mm with Ergun A = 150, B = 1.75).
 #include <gtest/gtest.h>
 
+#include "P0Sand.hpp"
 #include "physics/DriftFlux.hpp"
 
 using namespace qs;
 
-namespace {
-closed::SuspensionFlux p0Sand() {
-    closed::SuspensionFlux f;
-    f.law.mode = PermeabilityMode::KozenyCarman;
-    f.law.grainSize = 2.61e-4;
-    f.law.A = 150;
-    f.law.B = 1.75;
-    f.grainDensity = 2650;
-    f.liquidDensity = 998.2;
-    f.gravity = 9.81;
-    f.viscosity = 8.91e-4;
-    return f;
-}
-}  // namespace
+using test::p0Sand;
 
 TEST(DriftFlux, BedExpansionOfProblem7) {
     const auto f = p0Sand();

@@ -7,6 +7,7 @@
 #include <cstdio>
 
 #include "core/Constants.hpp"
+#include "P0Sand.hpp"
 #include "physics/FluidisedBedStability.hpp"
 
 using namespace qs;
@@ -14,15 +15,7 @@ using namespace qs;
 namespace {
 closed::FluidisedBed p0Bed(double diffusivity = 0, bool viscous = true) {
     closed::FluidisedBed bed;
-    auto& f = bed.suspension;
-    f.law.mode = PermeabilityMode::KozenyCarman;
-    f.law.grainSize = 2.61e-4;
-    f.law.A = 150;
-    f.law.B = 1.75;
-    f.grainDensity = 2650;
-    f.liquidDensity = 998.2;
-    f.gravity = 9.81;
-    f.viscosity = 8.91e-4;
+    bed.suspension = test::p0Sand();
     bed.porosity = 0.452;
     bed.maxPacking = 1 - 0.32;
     bed.diffusivity = diffusivity;
