@@ -159,7 +159,9 @@ void expectWaveOnTwoCellSizes(double wavelength, double growthGuard, double spee
         EXPECT_LT(std::abs(o.growthError), 0.10);
         EXPECT_LT(std::abs(o.growthError), growthGuard);  // a guard near what is reached
     }
-    if (wavelength / 0.0062 >= 16 - 1e-9) EXPECT_LT(std::abs(coarse.speedError), 0.10);
+    if (wavelength / 0.0062 >= 16 - 1e-9) {
+        EXPECT_LT(std::abs(coarse.speedError), 0.10);
+    }
     EXPECT_LT(std::abs(fine.speedError), 0.10);
     EXPECT_LT(std::abs(fine.speedError), speedGuardFine);
     const double order = std::log2(coarse.speedError / fine.speedError);
