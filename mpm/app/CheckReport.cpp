@@ -120,6 +120,9 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
     if (config.initial.gravityStageRamp > 0)
         out << "gravity stage: " << config.initial.gravityStageDuration << " s, the grains' buoyant weight ramped over "
             << config.initial.gravityStageRamp << " s, local damping " << config.initial.gravityStageDamping << "\n";
+    if (const auto& w = config.initial.porosityWave; w.enabled)
+        out << "porosity wave: n0 + " << w.amplitude << (w.lateral ? " cos(2 pi x / " : " sin(2 pi (z - filter) / ")
+            << w.wavelength << " m)" << (w.lateral ? ", across the column" : ", up the column") << "\n";
     if (const auto& f = config.initial.porosityField; f.enabled)
         out << "random porosity field: n0 + " << f.standardDeviation << " g(x), correlation length "
             << f.correlationLength << " m, seed " << f.seed << " (clipped to [n_min, n_max - 0.001])\n";
