@@ -52,14 +52,13 @@ Real solveNodes(const StepContext<D>& ctx, const StepInputs& in, Visit&& visit) 
     const Real dt = in.dt;
     forAll(ctx.grid.numNodes(), [&](Index i) {
         const Real mS = nodes.massS[i], mL = nodes.massL[i];
-        Real vS1[D], vL1[D], vL0[D], grainPush[D];
+        Real vS1[D], vL1[D], vL0[D];
         NodeComponent component[D];
         for (int d = 0; d < D; ++d) {
             const Index k = i * D + d;
             const Real vS0 = mS > 0 ? nodes.momS[k] / mS : 0.0;
             vL0[d] = mL > 0 ? nodes.momL[k] / mL : 0.0;
             Real fS = nodes.forceS[k], fL = nodes.forceL[k];
-            grainPush[d] = mS * vS0 / dt + fS;  // undamped: the damping is no force on a wall
             if (in.damping) {
                 // local damping, gravity stage only: F <- F - alpha |F| sign(v)
                 fS -= in.dampingAlpha * std::abs(fS) * (vS0 > 0 ? 1 : (vS0 < 0 ? -1 : 0));
@@ -72,9 +71,10 @@ Real solveNodes(const StepContext<D>& ctx, const StepInputs& in, Visit&& visit) 
         PhaseVelocities v[D];
         if (ctx.masks.roughWalls.rough(i) && mS > 0) {
             // the grains' push on the wall, the pore pressure's share off (boundary/RoughWalls.hpp)
-            Real pL[D], pS[D];
+            // from the undamped force: the gravity stage's damping is no force on a wall
+            Real pL[D], pS[D], grainPush[D];
             nodePressureForce(ctx.grid, ctx.water, nodes.porosity[i], i, pL, pS);
-            for (int d = 0; d < D; ++d) grainPush[d] -= pS[d];
+            for (int d = 0; d < D; ++d) grainPush[d] = nodes.momS[i * D + d] / dt + nodes.forceS[i * D + d] - pS[d];
             ctx.masks.roughWalls.solve(i, dt, grainPush, component, vS1, vL1, v);
         } else {
             for (int d = 0; d < D; ++d) v[d] = solveComponent(component[d], dt, vS1[d], vL1[d]);
