@@ -18,10 +18,11 @@
 //     grains' predictor, the pair then solved with drag as anywhere else.
 // The tangential components are taken together (in 3D a wall's two, at a corner the vertical
 // with both walls' N), so the friction is isotropic in the wall's plane. Only the grains rub: the
-// water stays smooth on the wall. The decision is the predictor's: the semi-implicit step's
-// pressure increment moves a stuck component as a held one (componentResponse sees it held) and
-// a slipping one with its friction fixed. The increment does not change N: its normal force is
-// the water's, which the wall takes.
+// water stays smooth on the wall. The semi-implicit step decides in its predictor, and takes the
+// decision again after each pressure solve with the increment's force in the trial
+// (SemiImplicitIntegrator::recheckWalls): a stuck component responds to the increment as a held
+// one, a slipping one with its friction fixed, until a decision overturns. The increment does
+// not change N: its normal force is the water's, which the wall takes.
 // In axisymmetry the outer wall (r = R) is rough and the axis, a line of symmetry, is not.
 #include <cmath>
 #include <vector>
@@ -60,44 +61,66 @@ struct RoughWalls {
 
     bool rough(Index i) const { return !atWall.empty() && atWall[i]; }
 
-    /// Node i's velocities on the wall. grainPush[a] = M_S v_S0 / dt + F_S - F_p,S (N), the grains'
-    /// push along each axis; c, vS1, vL1 the components and drag-free predictors as solveNodes has
-    /// them. A component that sticks comes back held (c[a].solidHeld), for the semi-implicit
-    /// step's response.
-    void solve(Index i, Real dt, const Real (&grainPush)[D], NodeComponent (&c)[D], const Real (&vS1)[D],
-               const Real (&vL1)[D], PhaseVelocities (&v)[D]) const {
+    /// The grains' normal push on node i's walls: N = sum over them of max(0, s push_a), from
+    /// grainPush[a] = M_S v_S0 / dt + F_S - F_p,S (N) along each axis. Friction holds up to mu N.
+    Real limit(Index i, const Real (&grainPush)[D]) const {
         Real N = 0;
-        bool tangential[D] = {};
         for (int a = 0; a < D; ++a) {
             const int s = side[i * D + a];
             if (s != 0) N += std::max(Real(0), s * grainPush[a]);
-            tangential[a] = s == 0 && !c[a].solidHeld;
         }
-        const Real mS = c[0].massS;
-        // the stuck solution, and the reaction it needs
-        Real R[D] = {}, R2 = 0;
-        PhaseVelocities stuck[D];
+        return friction * N;
+    }
+
+    /// A component the friction acts on: along the wall, the grains' not held by another boundary.
+    bool tangential(Index i, int a, const NodeComponent& c) const { return side[i * D + a] == 0 && !c.solidHeld; }
+
+    /// Whether node i's grains stick under the friction limit mu N (N), and R, the tangential
+    /// reaction holding them still would need: R_a = -(M_S v_S1,a / dt + Q v_L,a), v_L,a the water's
+    /// velocity with the grains held (its drag on them included). c as nodeComponent gives them
+    /// (the grains not yet held by the wall), vS1, vL1 the drag-free predictors.
+    bool sticks(Index i, Real dt, Real limit, const NodeComponent (&c)[D], const Real (&vS1)[D],
+                const Real (&vL1)[D], Real (&R)[D]) const {
+        Real R2 = 0;
         for (int a = 0; a < D; ++a) {
-            if (!tangential[a]) continue;
+            R[a] = 0;
+            if (!tangential(i, a, c[a])) continue;
             NodeComponent held = c[a];
             held.solidHeld = true;
-            stuck[a] = solveComponent(held, dt, vS1[a], vL1[a]);
-            R[a] = -(mS * vS1[a] / dt + c[a].drag * stuck[a].liquid);
+            R[a] = -(c[a].massS * vS1[a] / dt + c[a].drag * solveComponent(held, dt, vS1[a], vL1[a]).liquid);
             R2 += R[a] * R[a];
         }
-        const Real limit = friction * N;
-        const bool sticks = mS > 0 && R2 <= limit * limit;
-        const Real scale = R2 > 0 ? limit / std::sqrt(R2) : 0.0;
+        return c[0].massS > 0 && R2 <= limit * limit;
+    }
+
+    /// Node i's velocities with that decision: a stuck component held (c[a].solidHeld set, so
+    /// that the semi-implicit step's response sees it held); a slipping one with the friction
+    /// mu N R / |R| on the grains' predictor. The friction opposes the slip: the tangential
+    /// components share one mass, drag and water, so the slip comes out along R (an implicit
+    /// Coulomb law's radial return) and is never reversed by it, as |R| > mu N.
+    void velocities(Index i, Real dt, Real limit, bool stuck, const Real (&R)[D], NodeComponent (&c)[D],
+                    const Real (&vS1)[D], const Real (&vL1)[D], PhaseVelocities (&v)[D]) const {
+        Real R2 = 0;
+        for (int a = 0; a < D; ++a) R2 += R[a] * R[a];
+        const Real mS = c[0].massS, scale = R2 > 0 && mS > 0 ? limit / std::sqrt(R2) : 0.0;
         for (int a = 0; a < D; ++a) {
-            if (tangential[a] && sticks) {
-                c[a].solidHeld = true;
-                v[a] = stuck[a];
-            } else if (tangential[a] && mS > 0) {
-                v[a] = solveComponent(c[a], dt, vS1[a] + dt * scale * R[a] / mS, vL1[a]);
-            } else {
-                v[a] = solveComponent(c[a], dt, vS1[a], vL1[a]);
-            }
+            const bool along = tangential(i, a, c[a]);
+            if (along && stuck) c[a].solidHeld = true;
+            const Real friction = along && !stuck ? dt * scale * R[a] / mS : 0.0;
+            v[a] = solveComponent(c[a], dt, vS1[a] + friction, vL1[a]);
         }
+    }
+
+    /// Node i's velocities on the wall (grainPush, c, vS1, vL1 as above). Returns mu N, whether
+    /// the grains stick, and the holding reaction R.
+    struct Contact { Real limit = 0; bool stuck = false; Real reaction[D] = {}; };
+    Contact solve(Index i, Real dt, const Real (&grainPush)[D], NodeComponent (&c)[D], const Real (&vS1)[D],
+                  const Real (&vL1)[D], PhaseVelocities (&v)[D]) const {
+        Contact contact;
+        contact.limit = limit(i, grainPush);
+        contact.stuck = sticks(i, dt, contact.limit, c, vS1, vL1, contact.reaction);
+        velocities(i, dt, contact.limit, contact.stuck, contact.reaction, c, vS1, vL1, v);
+        return contact;
     }
 };
 

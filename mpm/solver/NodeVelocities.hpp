@@ -44,8 +44,10 @@ void uniformGateVelocity(const StepContext<D>& ctx, Real dt, Real resistance);
 
 /// Phase 4 of the explicit step: every node's velocities with implicit drag, the masks and the
 /// gate; nodes.velS, velL, velLIncrement and relSpeed. Returns the gate flux, m3/s.
-/// visit(i, a, component) sees each node component as it is solved: the semi-implicit step takes
-/// the components' responses to a pressure force in the same pass.
+/// visit(i, component, vS1, vL1, contact) sees each node as it is solved, its components (a
+/// component the wall holds by friction held), drag-free predictors and, at a rough wall, the
+/// friction's limit and decision (else nullptr): the semi-implicit step takes the components'
+/// responses to a pressure force in the same pass, and checks the walls' decisions against it.
 template <int D, class Visit>
 Real solveNodes(const StepContext<D>& ctx, const StepInputs& in, Visit&& visit) {
     NodeFields<D>& nodes = ctx.nodes;
@@ -69,20 +71,22 @@ Real solveNodes(const StepContext<D>& ctx, const StepInputs& in, Visit&& visit) 
             component[d] = nodeComponent(ctx, in, i, d);
         }
         PhaseVelocities v[D];
-        if (ctx.masks.roughWalls.rough(i) && mS > 0) {
+        typename RoughWalls<D>::Contact contact;
+        const bool wall = ctx.masks.roughWalls.rough(i) && mS > 0;
+        if (wall) {
             // the grains' push on the wall, the pore pressure's share off (boundary/RoughWalls.hpp)
             // from the undamped force: the gravity stage's damping is no force on a wall
             Real pL[D], pS[D], grainPush[D];
             nodePressureForce(ctx.grid, ctx.water, nodes.porosity[i], i, pL, pS);
             for (int d = 0; d < D; ++d) grainPush[d] = nodes.momS[i * D + d] / dt + nodes.forceS[i * D + d] - pS[d];
-            ctx.masks.roughWalls.solve(i, dt, grainPush, component, vS1, vL1, v);
+            contact = ctx.masks.roughWalls.solve(i, dt, grainPush, component, vS1, vL1, v);
         } else {
             for (int d = 0; d < D; ++d) v[d] = solveComponent(component[d], dt, vS1[d], vL1[d]);
         }
+        visit(i, component, vS1, vL1, wall ? &contact : nullptr);
         Real w2 = 0;
         for (int d = 0; d < D; ++d) {
             const Index k = i * D + d;
-            visit(i, d, component[d]);
             nodes.velS[k] = v[d].solid;
             nodes.velL[k] = v[d].liquid;
             nodes.velLIncrement[k] = v[d].liquid - vL0[d];  // what the FLIP update hands the liquid points
@@ -97,7 +101,8 @@ Real solveNodes(const StepContext<D>& ctx, const StepInputs& in, Visit&& visit) 
 /// The same, for the explicit step.
 template <int D>
 Real solveNodes(const StepContext<D>& ctx, const StepInputs& in) {
-    return solveNodes(ctx, in, [](Index, int, const NodeComponent&) {});
+    return solveNodes(ctx, in, [](Index, const NodeComponent(&)[D], const Real(&)[D], const Real(&)[D],
+                                  const typename RoughWalls<D>::Contact*) {});
 }
 
 }  // namespace qs

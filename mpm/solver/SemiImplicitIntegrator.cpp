@@ -34,6 +34,13 @@ SemiImplicitIntegrator<D>::SemiImplicitIntegrator(const StepContext<D>& context)
     for (auto* v : {&rhs_, &dp_, &gateY_, &heldValue_, &gateSolve_, &gateLeft_, &gateRight_}) v->setZero(nc);
     // over ranks the system's arrays hold the assembly only (no factorisation is analysed)
     system_.build(ctx_.grid, ctx_.ranks ? PressureSolver::ConjugateGradient : ctx_.config.time.pressureSolver);
+    wallSlot_.assign(nn, -1);
+    for (Index i = 0; i < nn; ++i)
+        if (ctx_.masks.roughWalls.rough(i)) {
+            wallSlot_[i] = static_cast<Index>(wallNodes_.size());
+            wallNodes_.emplace_back();
+            wallNodes_.back().node = i;
+        }
     stats_.solver = system_.solverName();
     if (ctx_.ranks) setUpDistributed();
 }
@@ -136,10 +143,15 @@ Real SemiImplicitIntegrator<D>::solveVelocities(const StepInputs& in, Real time)
     NodeFields<D>& nodes = ctx_.nodes;
     // the predictor (the explicit step with the pressure of the step's start), and in the same
     // pass each component's response to a pressure force
-    solveNodes(ctx_, in, [&](Index i, int a, const NodeComponent& component) {
-        const PhaseVelocities r = componentResponse(component, in.dt, nodes.porosity[i]);
-        rS_[i * D + a] = r.solid;
-        rL_[i * D + a] = r.liquid;
+    for (WallNode& w : wallNodes_) w.active = false;
+    solveNodes(ctx_, in, [&](Index i, const NodeComponent (&component)[D], const Real (&vS1)[D], const Real (&vL1)[D],
+                             const typename RoughWalls<D>::Contact* contact) {
+        for (int a = 0; a < D; ++a) {
+            const PhaseVelocities r = componentResponse(component[a], in.dt, nodes.porosity[i]);
+            rS_[i * D + a] = r.solid;
+            rL_[i * D + a] = r.liquid;
+        }
+        if (contact) recordWallNode(i, component, vS1, vL1, *contact);
     });
     // the predictor kept aside; correct() writes every node's velocities anew
     std::swap(predS_, nodes.velS);
@@ -170,6 +182,10 @@ Real SemiImplicitIntegrator<D>::solveVelocities(const StepInputs& in, Real time)
         ++solves_;
         if (solves_ > kMaxSolves) break;  // the pass after the cap, with the set as it stands
         changed = updateHeldCells(in.dt);
+        if (recheckWalls(in.dt)) {
+            changed = true;
+            stats_.wallPasses += 1;
+        }
         // held rows become the identity's (and free ones leave it): a kept AMG hierarchy of the
         // pass before fits the new matrix badly
         if (changed && distributed_) distributed_->rebuildPreconditioner();
@@ -454,6 +470,85 @@ bool SemiImplicitIntegrator<D>::updateHeldCells(Real dt) {
     // over ranks: the window's cells as their owners decided, and another pass if any rank's set moved
     ctx_.ranks->shareCellValues(held_, heldValue_);
     return ctx_.ranks->comm().any(changed);
+}
+
+// The predictor's wall node, kept for recheckWalls. Its components come with a stuck one held:
+// the wall's hold is taken off again (a boundary's, solidFixed, stays).
+template <int D>
+void SemiImplicitIntegrator<D>::recordWallNode(Index i, const NodeComponent (&c)[D], const Real (&vS1)[D],
+                                               const Real (&vL1)[D], const typename RoughWalls<D>::Contact& contact) {
+    WallNode& w = wallNodes_[wallSlot_[i]];
+    w.active = true;
+    w.stuck = contact.stuck;
+    w.limit = contact.limit;
+    for (int a = 0; a < D; ++a) {
+        w.free[a] = c[a];
+        w.free[a].solidHeld = ctx_.masks.solidFixed[i * D + a];
+        w.vS1[a] = vS1[a];
+        w.vL1[a] = vL1[a];
+        w.reaction[a] = contact.reaction[a];
+    }
+}
+
+// The drag-free predictors of a wall node with the increment's force G on the mixture.
+template <int D>
+void SemiImplicitIntegrator<D>::trialWithIncrement(const WallNode& w, Real dt, Real (&vS1)[D], Real (&vL1)[D]) const {
+    const Index i = w.node;
+    const Real n = ctx_.nodes.porosity[i], mS = ctx_.nodes.massS[i], mL = ctx_.nodes.massL[i];
+    for (int a = 0; a < D; ++a) {
+        const Real G = force_[i * D + a];
+        vS1[a] = w.vS1[a] + dt * (1 - n) * G / mS;
+        vL1[a] = mL > 0 ? w.vL1[a] + dt * n * G / mL : 0.0;
+    }
+}
+
+// Each wall node's decision taken again with the increment's force G on the mixture in its trial
+// (its solid's share (1 - n) G, its water's n G, as componentResponse shares it). Where one
+// overturns on any rank, every wall node's predictor and response are redone with the decision
+// and the aim the increment gives, and the pass is solved again. Returns whether it must be.
+template <int D>
+bool SemiImplicitIntegrator<D>::recheckWalls(Real dt) {
+    if (wallNodes_.empty()) return false;
+    const RoughWalls<D>& walls = ctx_.masks.roughWalls;
+    NodeFields<D>& nodes = ctx_.nodes;
+    bool overturned = false;
+    for (const WallNode& w : wallNodes_) {
+        if (!w.active) continue;
+        Real vS1[D], vL1[D], R[D];
+        trialWithIncrement(w, dt, vS1, vL1);
+        const bool stuck = walls.sticks(w.node, dt, w.limit, w.free, vS1, vL1, R);
+        Real along = 0;
+        for (int a = 0; a < D; ++a) along += R[a] * w.reaction[a];
+        const bool flips = stuck != w.stuck || (!stuck && along < 0);
+        if (flips && (!ctx_.ranks || ctx_.ranks->ownsNode(w.node))) overturned = true;
+    }
+    if (ctx_.ranks) overturned = ctx_.ranks->comm().any(overturned);
+    if (!overturned) return false;
+    for (WallNode& w : wallNodes_) {
+        if (!w.active) continue;
+        const Index i = w.node;
+        Real vS1[D], vL1[D];
+        trialWithIncrement(w, dt, vS1, vL1);
+        w.stuck = walls.sticks(i, dt, w.limit, w.free, vS1, vL1, w.reaction);
+        // the predictor without the increment (correct() adds it through the response), with the
+        // decision and the friction's aim the increment gave
+        NodeComponent c[D];
+        PhaseVelocities v[D];
+        for (int a = 0; a < D; ++a) c[a] = w.free[a];
+        walls.velocities(i, dt, w.limit, w.stuck, w.reaction, c, w.vS1, w.vL1, v);
+        const Real mL = nodes.massL[i];
+        for (int a = 0; a < D; ++a) {
+            if (!walls.tangential(i, a, w.free[a])) continue;  // the normal and the gate as the predictor left them
+            const Index k = i * D + a;
+            predS_[k] = v[a].solid;
+            predL_[k] = v[a].liquid;
+            incL_[k] = v[a].liquid - (mL > 0 ? nodes.momL[k] / mL : 0.0);
+            const PhaseVelocities r = componentResponse(c[a], dt, nodes.porosity[i]);
+            rS_[k] = r.solid;
+            rL_[k] = r.liquid;
+        }
+    }
+    return true;
 }
 
 template class SemiImplicitIntegrator<1>;

@@ -18,6 +18,12 @@
 //  4 Corrector: v = v* + dt r D^T dp. updatePressure then takes the cell's water from these
 //    velocities as in the explicit scheme, which gives p^n + dp where the system held, and keeps
 //    cavities and the water's volume consistent everywhere.
+// Rough walls (boundary/RoughWalls.hpp) decide stick or slip in the predictor; the increment's
+// force along the wall changes what holding the grains takes (its normal share is the water's,
+// which the wall takes, so mu N stays). After each solve every wall node's decision is taken
+// again with the increment's force in its trial: where one overturns (a stuck node past mu N, a
+// slipping one back within it or pulled the other way), the wall nodes' predictors and responses
+// are redone, the friction re-aimed, and the pass solved again, as the active set below is.
 // The water's lowest pressure (cavitation, no suction under the air) is a bound p >= p_lim: a
 // cell at its bound at the step's start is held there, a cell the solve takes below it is held
 // at it, and a held cell whose water the velocities would press above its bound is let go; a few
@@ -66,6 +72,11 @@ private:
     void solve(Real dt, Real time);
     void correct(Real dt);
     bool updateHeldCells(Real dt);
+    void recordWallNode(Index i, const NodeComponent (&c)[D], const Real (&vS1)[D], const Real (&vL1)[D],
+                        const typename RoughWalls<D>::Contact& contact);
+    bool recheckWalls(Real dt);
+    struct WallNode;
+    void trialWithIncrement(const WallNode& w, Real dt, Real (&vS1)[D], Real (&vL1)[D]) const;
     Real cellDivergence(Index c) const;
     Real limit(Index c) const;
     /// Whether this rank counts cell c (its owner; every cell on one rank).
@@ -89,6 +100,18 @@ private:
     std::vector<Real> force_;          ///< [D] N, D^T dp: the increment's force on the mixture
     std::vector<Real> gateWeight_;     ///< per gate node, M_L r_L: its share of the uniform gate's impulse
     std::vector<char> held_;           ///< per cell: its increment is known (no water, or at its bound)
+    /// A rough wall's node as the predictor solved it: what its decision is taken again from
+    struct WallNode {
+        Index node = 0;
+        bool active = false;              ///< it has grains this step
+        bool stuck = false;
+        Real limit = 0;                   ///< N, mu N
+        Real reaction[D] = {};            ///< N, the stuck trial's R the friction is aimed along
+        NodeComponent free[D];            ///< the components as nodeComponent gives them
+        Real vS1[D] = {}, vL1[D] = {};    ///< m/s, the drag-free predictors
+    };
+    std::vector<WallNode> wallNodes_;  ///< one per rough wall node, allocated once
+    std::vector<Index> wallSlot_;      ///< per node: its entry in wallNodes_, -1 off the walls
     Eigen::VectorXd rhs_, gateSolve_, gateLeft_, gateRight_;
     /// Pa, the increment; and y = A^-1 a_L, the gate's term (Sherman-Morrison). Kept over steps:
     /// CG starts from the last step's (pass's) solution, which the next differs from little.

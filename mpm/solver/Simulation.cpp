@@ -215,6 +215,7 @@ private:
     double nextOutput_ = 0, nextCheckpoint_ = 1e300, lastCheckpoint_ = -1;
     Clock::time_point wall0_, lastProgress_;
     long steps0_ = 0;
+    IntegratorStats integrator0_;  ///< the integrator's counts at the timed start (the gravity stage's)
     double pointSteps_ = 0;
 };
 
@@ -343,6 +344,7 @@ void RunOf<D>::open() {
     }
     wall0_ = lastProgress_ = Clock::now();
     steps0_ = solver_->stepCount();
+    integrator0_ = solver_->integratorStats();
     printHeader();
 }
 
@@ -502,7 +504,14 @@ RunSummary RunOf<D>::finish() {
     const double pointSteps = columnRanks_ ? columnRanks_->sum(pointSteps_) : pointSteps_;
     r.pointUpdatesPerSecond = r.wallSeconds > 0 ? pointSteps / r.wallSeconds : 0;
     r.dt = solver.dt();
+    // the timed part's: the gravity stage's solves are not in the wall time
     r.integrator = solver.integratorStats();
+    r.integrator.steps -= integrator0_.steps;
+    r.integrator.solves -= integrator0_.solves;
+    r.integrator.cappedSteps -= integrator0_.cappedSteps;
+    r.integrator.wallPasses -= integrator0_.wallPasses;
+    r.integrator.iterations -= integrator0_.iterations;
+    r.integrator.seconds -= integrator0_.seconds;
     r.outputDirectory = outDir_.string();
     if (windowAdvancer_) {
         r.coupling = windowAdvancer_->stats();
@@ -535,6 +544,9 @@ RunSummary RunOf<D>::finish() {
         std::printf(")\n");
         if (i.cappedSteps > 0)
             std::printf("quicksand: %ld steps ended their active set (the water's bound) unsettled\n", i.cappedSteps);
+        if (i.wallPasses > 0)
+            std::printf("quicksand: %ld passes (%.3g %% of the solves) were taken again because the pressure increment "
+                        "overturned a rough wall's stick or slip\n", i.wallPasses, 100.0 * double(i.wallPasses) / double(i.solves));
     }
     return r;
 }

@@ -66,6 +66,7 @@ struct IntegratorStats {
     long steps = 0;
     long solves = 0;          ///< linear solves (active-set passes), over all steps
     long cappedSteps = 0;     ///< steps whose active set had not settled after the last pass
+    long wallPasses = 0;      ///< passes taken again because the increment overturned a rough wall's stick or slip
     long iterations = 0;      ///< CG iterations over all solves (0 with the direct solver)
     /// s of wall time in the assembly, solve and correction (an estimate from sampled steps:
     /// SemiImplicitIntegrator)

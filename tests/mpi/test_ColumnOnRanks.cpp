@@ -203,12 +203,13 @@ void compareWithOneRank(const CaseConfig& config, int steps = kSteps, bool until
     // the semi-implicit step's active set (cells held at their bound), as the ranks agreed on it
     const IntegratorStats sa = one->solver->integratorStats(), sb = many.solver->integratorStats();
     EXPECT_EQ(sa.solves, sb.solves) << "the active set's passes";
+    EXPECT_EQ(sa.wallPasses, sb.wallPasses) << "the passes the rough walls' decisions took again";
     if (config.reservoir.head > 4) {
         EXPECT_GT(sa.solves, sa.steps) << "the surge must engage the active set";
     }
     if (sa.steps > 0)
-        std::printf("semi-implicit: %ld solves in %ld steps on one rank, %ld on %d ranks\n", sa.solves, sa.steps,
-                    sb.solves, world.size());
+        std::printf("semi-implicit: %ld solves (%ld for the walls) in %ld steps on one rank, %ld on %d ranks\n",
+                    sa.solves, sa.wallPasses, sa.steps, sb.solves, world.size());
 
     // every point
     expectSamePoints<D>(rows<D>(one->solver->solid(), true), rows<D>(solid, true), "solid", tolerance);
@@ -258,6 +259,13 @@ constexpr double kSolveTolerance = 1e-11;
 
 TEST(ColumnOnRanks, ThePlaneRandomBedStepsAsOnOneRankWithTheSemiImplicitScheme) {
     compareWithOneRank<2>(randomBed({"grid.width=0.1488"}, TimeScheme::SemiImplicit), kSteps, false, kSolveTolerance);
+}
+
+TEST(ColumnOnRanks, RoughWallsStepAsOnOneRankWithTheSemiImplicitScheme) {
+    // the walls' decisions taken again after each solve, from the increment of the cells around
+    // a wall node (its owner's), and a pass taken again where any rank's overturned
+    compareWithOneRank<2>(randomBed({"grid.width=0.1488", "column.wall_friction_angle=30"}, TimeScheme::SemiImplicit),
+                          kSteps, false, kSolveTolerance);
 }
 
 TEST(ColumnOnRanks, The3DRandomBedStepsAsOnOneRankWithTheSemiImplicitScheme) {
