@@ -12,6 +12,9 @@
 #include "physics/PipeFriction.hpp"
 #include "physics/WaveSpeeds.hpp"
 #include "physics/DragLaw.hpp"
+#include "physics/FluidisedBedStability.hpp"
+#include "physics/FrontDiffusion.hpp"
+#include "physics/ParticlePhase.hpp"
 #include "physics/Permeability.hpp"
 #include "solver/ColumnBuilder.hpp"
 #include "solver/RunPreconditions.hpp"
@@ -19,6 +22,38 @@
 #include "solver/TimeLattice.hpp"
 
 namespace qs {
+
+namespace {
+// Once fluidised (at n_max, where it starts): Kynch's kinematic wave speed c against Foscolo and
+// Gibilaro's elastic one u_e, their verdict, and what holds the bed uniform in quicksand: the
+// particle phase's diffusion K / B and the grid's front diffusion (physics.md section 7)
+void printFluidised(std::ostream& out, const CaseConfig& config, const MaterialConfig& m) {
+    if (!(config.gravity > 0)) return;
+    const double n = std::min(m.maxPorosity, 0.9);
+    closed::FluidisedBed bed;
+    bed.suspension = closed::SuspensionFlux::of(config, m);
+    bed.porosity = n;
+    bed.maxPacking = 1 - m.minPorosity;
+    const double d = m.particleGrainSize > 0 ? m.particleGrainSize : m.permeability.grainSize;
+    const FoscoloGibilaro fg{d, m.grainDensity, config.liquid.density, config.gravity};
+    const auto base = bed.base();
+    const double D = frontDiffusivity(DragLaw{config.liquid.viscosity, config.liquid.density}, PermeabilityLaw::from(m),
+                                      m.grainDensity, config.gravity, m.maxPorosity, config.grid.cellSize, m.frontDiffusion);
+    out << "  fluidised at n_max: kinematic wave c      " << base.kinematicSpeed << " m/s";
+    if (d > 0)
+        out << ", Foscolo-Gibilaro u_e " << fg.elasticWaveSpeed(n) << " m/s: "
+            << (fg.elasticWaveSpeed(n) > base.kinematicSpeed ? "particulate" : "aggregative") << " by their criterion";
+    out << "\n";
+    out << "  what holds it uniform                    ";
+    if (m.particlePhase == ParticlePhaseModel::FoscoloGibilaro)
+        out << "particle phase K / B = " << fg.modulus(n) / base.dragCoefficient << " m2/s (K = " << fg.modulus(n)
+            << " Pa), ";
+    else
+        out << "no particle phase (materials." << m.name << ".particle_phase = \"none\"), ";
+    out << "front diffusion " << D << " m2/s (alpha " << m.frontDiffusion << " on " << config.grid.cellSize
+        << " m cells)\n";
+}
+}  // namespace
 
 namespace {
 /// A step count to print: a whole number while it fits, else the double (an absurd case,
@@ -156,6 +191,7 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         // c_v = k/(gamma_w (m_v + n/K_L)) = (kappa/mu)/(m_v + n/K_L): independent of g
         out << "  consolidation coefficient c_v            "
             << (kappa / mu) / (1 / Eoed + n / KL) << " m2/s\n";
+        printFluidised(out, config, m);
     }
     // the step the solver takes (solver/RunSize.hpp): the same c_fast as the closed forms above,
     // from the materials' constitutive models

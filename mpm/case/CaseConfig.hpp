@@ -74,6 +74,11 @@ struct MaterialConfig {
     bool ergun = true;                 ///< Forchheimer (Ergun) term on
     double ergunA = 150.0;             ///< -, Ergun/Kozeny-Carman A
     double ergunB = 1.75;              ///< -, Ergun B
+    /// the fluidised sand's particle phase: none (the grains carry no stress once fluidised), or
+    /// Foscolo and Gibilaro's elastic force (physics/ParticlePhase.hpp)
+    ParticlePhaseModel particlePhase = ParticlePhaseModel::None;
+    double particleGrainSize = 0.0;    ///< m, d of Foscolo and Gibilaro's modulus
+    double frontDiffusion = 0.25;      ///< -, alpha of the kinematic front diffusion D = alpha h c (0: none)
 };
 
 /// A horizontal range [from, to] (m) on one horizontal axis; the whole width when absent.

@@ -47,7 +47,7 @@ constexpr const char* kMaterialKeys[] = {
     "model",          "grain_density", "porosity",       "max_porosity",    "min_porosity",
     "youngs_modulus", "poisson_ratio", "friction_angle", "dilatancy_angle", "cohesion",
     "tensile_strength", "k0",          "ergun",          "ergun_a",         "ergun_b",
-    "permeability"};
+    "permeability",   "particle_phase", "particle_grain_size", "front_diffusion"};
 constexpr const char* kPermeabilityKeys[] = {"mode", "value", "grain_size"};
 /// kg/m3: below this a grain density is taken for a unit mistake (g/cm3); the lightest
 /// granular media modelled this way (plastic beads) are about 1 000 kg/m3.
@@ -126,6 +126,9 @@ const Options<GridGeometry> kGeometryOptions = {{"plane", GridGeometry::Plane},
 const Options<ConstitutiveModelKind> kModelOptions = {
     {"linear_elastic", ConstitutiveModelKind::LinearElastic},
     {"mohr_coulomb", ConstitutiveModelKind::MohrCoulomb}};
+const Options<ParticlePhaseModel> kParticlePhaseOptions = {
+    {"none", ParticlePhaseModel::None},
+    {"foscolo_gibilaro", ParticlePhaseModel::FoscoloGibilaro}};
 const Options<PermeabilityMode> kPermeabilityOptions = {
     {"constant", PermeabilityMode::Constant},
     {"kozeny_carman", PermeabilityMode::KozenyCarman},
@@ -400,7 +403,32 @@ private:
         m.ergunA = s.optionalNumber("ergun_a", 150.0, positive(""));
         m.ergunB = s.optionalNumber("ergun_b", 1.75, nonNegative(""));
         m.permeability = readPermeability(s.subsection("permeability", kPermeability, true));
+        readParticlePhase(s, m);
         return m;
+    }
+
+    // The fluidised sand's particle phase, and how much of the grid's front diffusion is kept
+    void readParticlePhase(const Section& s, MaterialConfig& m) const {
+        m.particlePhase = s.choice("particle_phase", ParticlePhaseModel::None, kParticlePhaseOptions);
+        m.frontDiffusion = s.optionalNumber("front_diffusion", 0.25, between(0, false, 1, false, ""),
+                                            "alpha of D = alpha h c, 0.25 by default, 0 to turn it off");
+        if (m.particlePhase == ParticlePhaseModel::None) {
+            s.forbid("particle_grain_size", "it is Foscolo and Gibilaro's grain size, and particle_phase is \"none\" "
+                                            "(set particle_phase = \"foscolo_gibilaro\" to use it)");
+            return;
+        }
+        const bool kozenyCarman = m.permeability.mode == PermeabilityMode::KozenyCarman;
+        if (kozenyCarman)
+            m.particleGrainSize = s.optionalNumber("particle_grain_size", m.permeability.grainSize, positive("m"),
+                                                   "the grains' size in m (default: the permeability's grain_size)");
+        else
+            m.particleGrainSize = s.requiredNumber("particle_grain_size", positive("m"),
+                                                   "the grains' size d in m, e.g. 0.261 mm = 2.61e-4 m (Foscolo and "
+                                                   "Gibilaro's modulus 3.2 g d (1 - n)(rho_s - rho_L))");
+        if (m.particleGrainSize > 0.05)
+            s.fail("particle_grain_size", "value " + number(m.particleGrainSize) +
+                                              " m is not a grain's size (expected > 0 and <= 0.05 m). The unit is m, "
+                                              "not mm: 0.261 mm = 2.61e-4 m");
     }
 
     PermeabilityConfig readPermeability(const Section& s) const {

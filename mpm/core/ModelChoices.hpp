@@ -9,6 +9,8 @@ enum class ShapeFunctionKind { Linear, Gimp };
 enum class GridGeometry { Plane, Axisymmetric };
 enum class PermeabilityMode { Constant, KozenyCarman, KozenyCarmanScaled };
 enum class ConstitutiveModelKind { LinearElastic, MohrCoulomb };
+/// The fluidised sand's particle phase (physics/ParticlePhase.hpp): none, or Foscolo and Gibilaro's.
+enum class ParticlePhaseModel { None, FoscoloGibilaro };
 enum class InitialStress { K0, Zero };
 enum class InitialState { Solid, Fluidised };
 enum class GateMode { Pressure, Flux, Closed };

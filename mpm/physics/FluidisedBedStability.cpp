@@ -42,7 +42,7 @@ FluidisedBed::Base FluidisedBed::base() const {
 }
 
 // rho_s n0 s sigma + rho_L phi0 (s + i k V0)(sigma + i k V0) + B (sigma + i k c)
-//   + (4/3)(n0/phi0) mu_s k^2 sigma = 0,  sigma = s + D k^2: a s^2 + b s + e = 0
+//   + (4/3)(n0/phi0) mu_s k^2 sigma + K k^2 = 0,  sigma = s + D k^2: a s^2 + b s + e = 0
 std::complex<double> FluidisedBed::verticalGrowth(double k) const {
     const Base b = base();
     const double n0 = porosity, phi0 = 1 - n0, rhoS = suspension.grainDensity, rhoL = suspension.liquidDensity;
@@ -51,7 +51,8 @@ std::complex<double> FluidisedBed::verticalGrowth(double k) const {
     const Complex ikV = I * k * V0;
     const Complex a2 = rhoS * n0 + rhoL * phi0;
     const Complex a1 = rhoS * n0 * Dk2 + rhoL * phi0 * (Dk2 + 2.0 * ikV) + b.dragCoefficient + viscous;
-    const Complex a0 = rhoL * phi0 * ikV * (Dk2 + ikV) + b.dragCoefficient * (Dk2 + I * k * b.kinematicSpeed) + viscous * Dk2;
+    const Complex a0 = rhoL * phi0 * ikV * (Dk2 + ikV) + b.dragCoefficient * (Dk2 + I * k * b.kinematicSpeed) +
+                       viscous * Dk2 + particleModulus * k * k;
     const Complex root = std::sqrt(a1 * a1 - 4.0 * a2 * a0);
     const Complex s1 = (-a1 + root) / (2.0 * a2), s2 = (-a1 - root) / (2.0 * a2);
     return s1.real() >= s2.real() ? s1 : s2;  // the kinematic mode; the other relaxes the slip
@@ -86,6 +87,12 @@ std::complex<double> FluidisedBed::growth(double kx, double kz) const {
     A(VZ, VZ) = -I * kz * V0 - fw / ml;
     A(VZ, UZ) = fw / ml;
     A(VZ, P) = (-phi0 * drho * g + fn) / ml;
+    // a particle phase's exchange force: -K grad(phi) on the grains, +K grad(phi) on the water
+    const double K = particleModulus;
+    A(UX, P) += -I * kx * K / ms;
+    A(UZ, P) += -I * kz * K / ms;
+    A(VX, P) += I * kx * K / ml;
+    A(VZ, P) += I * kz * K / ml;
     bp << 0.0, -I * kx / rhoS, -I * kz / rhoS, -I * kx / rhoL, -I * kz / rhoL;
     C << -I * kz * V0, I * phi0 * kx, I * phi0 * kz, I * n0 * kx, I * n0 * kz;
     const Complex Cb = C.transpose() * bp;
@@ -100,8 +107,8 @@ std::complex<double> FluidisedBed::growth(double kx, double kz) const {
     const auto& values = solver.eigenvalues();
     // The kinematic mode: one that moves porosity (the shear modes, phi' = 0, decay only at
     // -mu_s k^2 / rho and would otherwise win against -D k^2), the one nearest its drag-dominated
-    // limit -i k_z c - D k^2.
-    const Complex limit(-diffusivity * k2, -kz * b.kinematicSpeed);
+    // limit -i k_z c - (D + K / B) k^2.
+    const Complex limit(-(diffusivity + particleModulus / b.dragCoefficient) * k2, -kz * b.kinematicSpeed);
     Complex best(HUGE_VAL, 0);
     for (int m = 0; m < values.size(); ++m) {
         const Eigen::Matrix<Complex, 5, 1> x = Q * solver.eigenvectors().col(m);

@@ -2,13 +2,14 @@
 // The linear stability of a uniformly fluidised bed (physics.md section 7): the growth rate and
 // phase velocity of a small porosity perturbation exp(i k . x + s t) of quicksand's own continuum
 // equations for sand without effective stress (drag, the suspension's viscosity, the kinematic
-// front diffusion D, the pressure forces -phi grad p and -n grad p, incompressible water). A
+// front diffusion D, a particle phase's exchange force, the pressure forces -phi grad p and
+// -n grad p, incompressible water). A
 // closed form for the verification tests and `quicksand check`; the step never calls it.
 //   - vertical modes (k along z): the quadratic of physics.md section 7, solved exactly;
 //   - any direction: the 5 x 5 eigenproblem of the linearised equations for (phi', u', v') with
 //     the pressure eliminated by the mixture's volume balance, on its kernel; the kinematic mode is the
 //     constrained eigenvalue that moves porosity nearest its drag-dominated limit
-//     -i k_z c - D k^2 (the others are the drag's relaxation of the slip, at about -B / rho, and
+//     -i k_z c - (D + K / B) k^2 (the others are the drag's relaxation of the slip, at about -B / rho, and
 //     shear modes without porosity, which decay at -mu_s k^2 / rho only).
 #include <complex>
 
@@ -22,6 +23,9 @@ struct FluidisedBed {
     double maxPacking = 0.68;    ///< phi_m = 1 - n_min, of the suspension's viscosity
     double diffusivity = 0;      ///< m2/s, D of the front diffusion (0: the continuum without it)
     bool viscous = true;         ///< with the suspension's viscosity mu (mu_r - 1)
+    /// Pa, K of a particle phase's exchange force -K grad(phi) on the grains, +K grad(phi) on the
+    /// water (physics/ParticlePhase.hpp; 0: none)
+    double particleModulus = 0;
 
     /// The base state and the coefficients of the vertical quadratic.
     struct Base {

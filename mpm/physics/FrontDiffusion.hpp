@@ -46,13 +46,14 @@ inline Real equilibriumSuspensionFlux(const DragLaw& drag, const PermeabilityLaw
 }
 
 /// m2/s, D = alpha h c at n = n_max (capped at 0.9), c = (1 - n) dq/dn the kinematic wave speed of
-/// the equilibrium suspension, on cells of h (m).
+/// the equilibrium suspension, on cells of h (m); alpha the material's `front_diffusion` (with a
+/// particle phase that holds the fronts itself it may be cut, docs/fluidisation.md).
 inline Real frontDiffusivity(const DragLaw& drag, const PermeabilityLaw& law, Real grainDensity, Real gravity,
-                             Real maxPorosity, Real h) {
+                             Real maxPorosity, Real h, Real alpha = kFrontDiffusionAlpha) {
     const Real n = std::min(maxPorosity, Real(0.9)), dn = 1e-4;
     auto q = [&](Real at) { return equilibriumSuspensionFlux(drag, law, grainDensity, gravity, at); };
     const Real c = (1 - n) * (q(n + dn) - q(n - dn)) / (2 * dn);
-    return kFrontDiffusionAlpha * h * std::max(c, Real(0));
+    return alpha * h * std::max(c, Real(0));
 }
 
 }  // namespace qs

@@ -48,7 +48,11 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.suspension.maxPacking = 1 - m.minPorosity;
         s.permeability = PermeabilityLaw::from(m);
         s.frontDiffusivity = frontDiffusivity(DragLaw{config.liquid.viscosity, config.liquid.density},
-                                              s.permeability, m.grainDensity, config.gravity, m.maxPorosity, h);
+                                              s.permeability, m.grainDensity, config.gravity, m.maxPorosity, h,
+                                              m.frontDiffusion);
+        s.particlePhase = m.particlePhase == ParticlePhaseModel::FoscoloGibilaro;
+        s.elasticForce = {m.particleGrainSize, m.grainDensity, config.liquid.density, config.gravity};
+        anyParticlePhase_ = anyParticlePhase_ || s.particlePhase;
         materials_.push_back(s);
     }
     // dt = C h / c: with implicit drag the fastest explicit wave is the zero-drag fast wave, and

@@ -45,6 +45,7 @@
 #include "physics/LiquidStateRule.hpp"
 #include "physics/FrontDiffusion.hpp"
 #include "physics/Pipes.hpp"
+#include "physics/ParticlePhase.hpp"
 #include "physics/Permeability.hpp"
 #include "physics/SuspensionViscosity.hpp"
 #include "points/LiquidPoints.hpp"
@@ -66,6 +67,8 @@ struct SolidMaterial {
     std::shared_ptr<const ConstitutiveModel> model;  ///< the skeleton's stress-strain law
     SuspensionViscosity suspension;                  ///< viscosity once fluidised
     Real frontDiffusivity = 0;                       ///< m2/s, D (physics/FrontDiffusion.hpp)
+    bool particlePhase = false;                      ///< with Foscolo and Gibilaro's force once fluidised
+    FoscoloGibilaro elasticForce;                    ///< its modulus (physics/ParticlePhase.hpp)
     PermeabilityLaw permeability;
 };
 
@@ -170,6 +173,10 @@ private:
     void computePressureGradient();   // PorePressure.cpp
     void pressureForces();            // PorePressure.cpp
     void gravityForces();             // Forces.cpp
+    void particlePhaseForces();       // ParticlePhase.cpp
+    /// Whether node i lies inside sand that carries no effective stress, where the front
+    /// diffusion and the particle phase act (FrontDiffusion.cpp)
+    bool insideStressFreeSand(Index i) const;
     void gateTraction();              // Gate.cpp
     void switchLiquidState();
     void diffuseFronts();
@@ -247,6 +254,7 @@ private:
     long steps_ = 0;
     bool damping_ = false;
     Real dampingAlpha_ = 0;
+    bool anyParticlePhase_ = false;  ///< some material has a particle phase (particlePhaseForces)
     Real weightShare_ = 1;           ///< the share of the grains' buoyant weight loaded (the gravity stage's ramp)
     Real gateFlux_ = 0, gatePressure_ = 0;
     Real cumulativeInflow_ = 0, outflowVolume_ = 0;

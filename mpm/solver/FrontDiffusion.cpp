@@ -19,22 +19,27 @@
 namespace qs {
 
 template <int D>
-void DoublePointSolver<D>::diffuseFronts() {
-    const Index rowStride = grid_.nodeStride(D - 1), lastRow = grid_.nodes(D - 1) - 1;
-    forAll(grid_.numNodes(), [&](Index i) {
-        bool inside = nodes_.massS[i] > 0 && !masks_.solidFixed[i * D + D - 1];
-        const Index row = i / rowStride;
-        if (row == 0 || row == lastRow) inside = false;
-        grid_.forEachCellOfNode(i, [&](Index c, int) {
-            if (!cells_.hasSolid(c) || !sand_.stressFree[c] || sand_.surface[c])
-                inside = false;
-        });
-        nodes_.diffusionNode[i] = inside;
+bool DoublePointSolver<D>::insideStressFreeSand(Index i) const {
+    const Index row = i / grid_.nodeStride(D - 1);
+    if (!(nodes_.massS[i] > 0) || masks_.solidFixed[i * D + D - 1] || row == 0 || row == grid_.nodes(D - 1) - 1)
+        return false;
+    bool inside = true;
+    grid_.forEachCellOfNode(i, [&](Index c, int) {
+        if (!cells_.hasSolid(c) || !sand_.stressFree[c] || sand_.surface[c]) inside = false;
     });
+    return inside;
+}
+
+template <int D>
+void DoublePointSolver<D>::diffuseFronts() {
+    forAll(grid_.numNodes(), [&](Index i) { nodes_.diffusionNode[i] = insideStressFreeSand(i); });
     // most steps of most runs have no stress-free sand: the points then skip the diffusion's sums
     nodes_.anyDiffusion = anyOf(grid_.numNodes(), [&](Index i) { return nodes_.diffusionNode[i] != 0; });
 }
 
+template bool DoublePointSolver<1>::insideStressFreeSand(Index) const;
+template bool DoublePointSolver<2>::insideStressFreeSand(Index) const;
+template bool DoublePointSolver<3>::insideStressFreeSand(Index) const;
 template void DoublePointSolver<1>::diffuseFronts();
 template void DoublePointSolver<2>::diffuseFronts();
 template void DoublePointSolver<3>::diffuseFronts();

@@ -42,6 +42,7 @@ struct NodeFields {
     std::vector<Real> fedWeight;       ///< [D] -, how far the node is fed with sand, 1 for a held component
     std::vector<char> diffusionNode;   ///< where the front diffusion acts (FrontDiffusion.cpp)
     bool anyDiffusion = false;         ///< whether any node is one
+    std::vector<char> particlePhaseNode;  ///< where the particle phase's force acts (ParticlePhase.cpp)
 
     /// The fields carried from one step to the next (checkpointed as nodes/NAME).
     template <class F>
@@ -55,6 +56,7 @@ struct NodeFields {
         for (auto* a : {&momS, &momL, &forceS, &forceL, &velS, &velL, &velLIncrement, &fedWeight})
             a->assign(nodes * D, 0.0);
         diffusionNode.assign(nodes, 0);
+        particlePhaseNode.assign(nodes, 0);
     }
 };
 

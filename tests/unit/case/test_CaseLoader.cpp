@@ -773,5 +773,39 @@ TEST(CaseLoader, APorosityWaveNeedsAnAmplitudeAWavelengthAndLateralWalls) {
     expectError(none, "initial.porosity_wave.wavelength", lineOf(none, "[initial.porosity_wave]"));
 }
 
+TEST(CaseLoader, TheParticlePhaseNeedsTheGrainsSizeInMetres) {
+    // none by default, the front diffusion at 0.25
+    const CaseConfig plain = parseCase(kMinimal, kFile);
+    EXPECT_EQ(plain.materials.front().particlePhase, ParticlePhaseModel::None);
+    EXPECT_DOUBLE_EQ(plain.materials.front().frontDiffusion, 0.25);
+    // with a constant permeability there is no grain size to take: it must be given
+    const std::string fg = replaced(kMinimal, "porosity = 0.38\n", "porosity = 0.38\nparticle_phase = \"foscolo_gibilaro\"\n");
+    const std::string missing = expectError(fg, "materials.sand.particle_grain_size", lineOf(fg, "[materials.sand]"));
+    EXPECT_TRUE(contains(missing, "m")) << missing;
+    const std::string given = replaced(fg, "particle_phase = \"foscolo_gibilaro\"\n",
+                                       "particle_phase = \"foscolo_gibilaro\"\nparticle_grain_size = 2.61e-4\n");
+    EXPECT_DOUBLE_EQ(parseCase(given, kFile).materials.front().particleGrainSize, 2.61e-4);
+    // a size in mm, and a negative one
+    for (const char* bad : {"0.261", "-1e-4"}) {
+        const std::string text = replaced(given, "particle_grain_size = 2.61e-4", std::string("particle_grain_size = ") + bad);
+        const std::string what = expectError(text, "materials.sand.particle_grain_size", lineOf(text, "particle_grain_size"));
+        EXPECT_TRUE(contains(what, "m")) << what;
+    }
+    // Kozeny-Carman's grain size is the default
+    const std::string kc = replaced(fg, "mode = \"constant\"\nvalue = 1.49e-10", "mode = \"kozeny_carman\"\ngrain_size = 3e-4");
+    EXPECT_DOUBLE_EQ(parseCase(kc, kFile).materials.front().particleGrainSize, 3e-4);
+    // a grain size without the particle phase says what it would need
+    const std::string stray = replaced(kMinimal, "porosity = 0.38\n", "porosity = 0.38\nparticle_grain_size = 2.61e-4\n");
+    const std::string what = expectError(stray, "materials.sand.particle_grain_size", lineOf(stray, "particle_grain_size"));
+    EXPECT_TRUE(contains(what, "foscolo_gibilaro")) << what;
+    // the front diffusion's alpha in [0, 1]
+    for (const char* alpha : {"-0.1", "1.5"}) {
+        const std::string text = replaced(kMinimal, "porosity = 0.38\n", std::string("porosity = 0.38\nfront_diffusion = ") + alpha + "\n");
+        expectError(text, "materials.sand.front_diffusion", lineOf(text, "front_diffusion"));
+    }
+    const std::string off = replaced(kMinimal, "porosity = 0.38\n", "porosity = 0.38\nfront_diffusion = 0\n");
+    EXPECT_DOUBLE_EQ(parseCase(off, kFile).materials.front().frontDiffusion, 0.0);
+}
+
 }  // namespace
 }  // namespace qs

@@ -9,6 +9,7 @@
 #include "core/Constants.hpp"
 #include "P0Sand.hpp"
 #include "physics/FluidisedBedStability.hpp"
+#include "physics/ParticlePhase.hpp"
 
 using namespace qs;
 
@@ -106,4 +107,97 @@ TEST(FluidisedBedStability, ObliqueModesRiseAtTheKinematicSpeedAndGrowLessThanVe
     EXPECT_NEAR(-oblique.imag(), -vertical.imag(), 0.01 * std::abs(vertical.imag()));  // rises at c
     std::printf("lambda 50 mm at 45 deg: Re s = %.3e 1/s (a vertical mode of the same k_z: %.3e)\n", oblique.real(),
                 vertical.real());
+}
+
+namespace {
+/// The P0 sand's Foscolo-Gibilaro modulus at n (physics/ParticlePhase.hpp)
+FoscoloGibilaro p0ElasticForce() {
+    const auto s = test::p0Sand();
+    return {s.law.grainSize, s.grainDensity, s.liquidDensity, s.gravity};
+}
+}  // namespace
+
+TEST(FluidisedBedStability, AParticlePhaseExchangeForceEntersTheQuadraticAsKk2) {
+    // the eigenproblem, which carries -K grad(phi) and +K grad(phi) in the two momentum
+    // balances, against the quadratic with + K k^2, and its first order: Re s = k^2 (D_i - D - K / B)
+    for (double K : {1.0, 7.4, 50.0}) {
+        closed::FluidisedBed bed = p0Bed();
+        bed.particleModulus = K;
+        const auto b = bed.base();
+        for (double lambda : kWavelengths) {
+            const double k = 2 * kPi / lambda;
+            const auto quadratic = bed.verticalGrowth(k), eigen = bed.growth(0, k);
+            EXPECT_NEAR(eigen.real(), quadratic.real(), 1e-7 * std::abs(quadratic)) << "lambda " << lambda << " K " << K;
+            EXPECT_NEAR(eigen.imag(), quadratic.imag(), 1e-7 * std::abs(quadratic)) << "lambda " << lambda << " K " << K;
+            EXPECT_NEAR(quadratic.real(), k * k * (b.inertialDiffusivity - K / b.dragCoefficient),
+                        0.02 * k * k * (b.inertialDiffusivity + K / b.dragCoefficient))
+                << "lambda " << lambda << " K " << K;
+            EXPECT_LT(quadratic.real(), 0) << "particulate: every vertical mode decays";
+        }
+    }
+}
+
+TEST(FluidisedBedStability, AParticlePhaseDampsLateralModesToo) {
+    // the exchange force pushes the grains down the porosity's lateral gradient against the slip's
+    // drag: a lateral mode decays at about K k^2 n0 phi0 / beta, where without it it is neutral
+    closed::FluidisedBed bed = p0Bed();
+    bed.particleModulus = 7.4;
+    const auto b = bed.base();
+    for (double lambda : kWavelengths) {
+        const double k = 2 * kPi / lambda;
+        const auto s = bed.growth(k, 0);
+        const double rate = bed.particleModulus * k * k * bed.porosity * (1 - bed.porosity) / b.secantDrag;
+        EXPECT_NEAR(s.real(), -rate, 0.02 * rate) << "lambda " << lambda;
+    }
+}
+
+TEST(FluidisedBedStability, FoscoloGibilarosCriterionIsQuicksandsWithoutTheWatersInertia) {
+    // K = n rho_s u_e^2: the vertical modes' first order, rho_s n0 c^2 + rho_L phi0 (V0 - c)^2 < K,
+    // without the water's inertia is FG's c < u_e
+    const FoscoloGibilaro fg = p0ElasticForce();
+    const double n = 0.452;
+    EXPECT_NEAR(fg.modulus(n), n * fg.grainDensity * fg.elasticWaveSpeed(n) * fg.elasticWaveSpeed(n), 1e-12);
+    closed::FluidisedBed bed = p0Bed();
+    bed.particleModulus = fg.modulus(n);
+    const auto b = bed.base();
+    std::printf("P0 at n = 0.452: K = %.3f Pa, u_e = %.4f m/s against c = %.4e m/s; K / B = %.3e m2/s\n",
+                fg.modulus(n), fg.elasticWaveSpeed(n), b.kinematicSpeed, bed.particleModulus / b.dragCoefficient);
+    EXPECT_GT(fg.elasticWaveSpeed(n), b.kinematicSpeed);  // FG: this sand fluidises particulately
+    EXPECT_LT(bed.verticalGrowth(2 * kPi / 0.05).real(), 0);
+}
+
+namespace {
+/// A bed of spheres of `d` (m) and density rho_s fluidised in water at porosity n, with
+/// quicksand's drag (Kozeny-Carman and Ergun, A = 150, B = 1.75), and its FG modulus.
+closed::FluidisedBed sphereBed(double d, double rhoS, double n) {
+    closed::FluidisedBed bed;
+    bed.suspension = test::p0Sand();
+    bed.suspension.law.grainSize = d;
+    bed.suspension.grainDensity = rhoS;
+    bed.porosity = n;
+    bed.maxPacking = 0.64;
+    bed.particleModulus = FoscoloGibilaro{d, rhoS, bed.suspension.liquidDensity, bed.suspension.gravity}.modulus(n);
+    return bed;
+}
+}  // namespace
+
+TEST(FluidisedBedStability, FoscoloGibilaroCallLeadShotAggregativeAndFineSandParticulate) {
+    // the literature's examples of the two regimes of liquid fluidisation: lead shot of 3 mm in
+    // water fluidises aggregatively (Wilhelm and Kwauk 1948; FG 1984), fine sand and 1 mm glass
+    // particulately. quicksand's drag and FG's modulus, at n = 0.5: the vertical mode of 50 mm
+    // grows for lead and decays for the others
+    struct Case { const char* name; double d, rhoS; bool aggregative; };
+    for (const Case& m : {Case{"lead shot 3 mm", 3e-3, 11340, true}, Case{"glass 1 mm", 1e-3, 2500, false},
+                          Case{"P0 sand 0.261 mm", 2.61e-4, 2650, false}}) {
+        const closed::FluidisedBed bed = sphereBed(m.d, m.rhoS, 0.5);
+        const auto b = bed.base();
+        const FoscoloGibilaro fg{m.d, m.rhoS, 998.2, 9.81};
+        const double s = bed.verticalGrowth(2 * kPi / 0.05).real();
+        std::printf("%s at n = 0.5: U = %.4e m/s, c = %.4e m/s, u_e = %.4e m/s, K = %.2f Pa, D_i = %.3e, K/B = %.3e "
+                    "m2/s; the 50 mm mode's growth %.4e 1/s\n",
+                    m.name, b.filterVelocity, b.kinematicSpeed, fg.elasticWaveSpeed(0.5), bed.particleModulus,
+                    b.inertialDiffusivity, bed.particleModulus / b.dragCoefficient, s);
+        EXPECT_EQ(fg.elasticWaveSpeed(0.5) < b.kinematicSpeed, m.aggregative) << m.name;
+        EXPECT_EQ(s > 0, m.aggregative) << m.name;
+    }
 }
