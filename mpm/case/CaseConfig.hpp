@@ -79,6 +79,9 @@ struct MaterialConfig {
     ParticlePhaseModel particlePhase = ParticlePhaseModel::None;
     double particleGrainSize = 0.0;    ///< m, d of Foscolo and Gibilaro's modulus
     double frontDiffusion = 0.25;      ///< -, alpha of the kinematic front diffusion D = alpha h c (0: none)
+    /// -, s: the front diffusion fades where the porosity changes by less than s over a cell,
+    /// D (h |grad phi| / s)^2 below it (0: everywhere in full, as before)
+    double frontThreshold = 0.0;
 };
 
 /// A horizontal range [from, to] (m) on one horizontal axis; the whole width when absent.

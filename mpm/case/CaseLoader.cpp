@@ -47,7 +47,7 @@ constexpr const char* kMaterialKeys[] = {
     "model",          "grain_density", "porosity",       "max_porosity",    "min_porosity",
     "youngs_modulus", "poisson_ratio", "friction_angle", "dilatancy_angle", "cohesion",
     "tensile_strength", "k0",          "ergun",          "ergun_a",         "ergun_b",
-    "permeability",   "particle_phase", "particle_grain_size", "front_diffusion"};
+    "permeability",   "particle_phase", "particle_grain_size", "front_diffusion", "front_threshold"};
 constexpr const char* kPermeabilityKeys[] = {"mode", "value", "grain_size"};
 /// kg/m3: below this a grain density is taken for a unit mistake (g/cm3); the lightest
 /// granular media modelled this way (plastic beads) are about 1 000 kg/m3.
@@ -412,6 +412,9 @@ private:
         m.particlePhase = s.choice("particle_phase", ParticlePhaseModel::None, kParticlePhaseOptions);
         m.frontDiffusion = s.optionalNumber("front_diffusion", 0.25, between(0, false, 1, false, ""),
                                             "alpha of D = alpha h c, 0.25 by default, 0 to turn it off");
+        m.frontThreshold = s.optionalNumber("front_threshold", 0.0, between(0, false, 0.5, false, ""),
+                                            "the porosity change over a cell below which the front diffusion "
+                                            "fades, e.g. 0.01; 0 (the default) keeps it everywhere");
         if (m.particlePhase == ParticlePhaseModel::None) {
             s.forbid("particle_grain_size", "it is Foscolo and Gibilaro's grain size, and particle_phase is \"none\" "
                                             "(set particle_phase = \"foscolo_gibilaro\" to use it)");

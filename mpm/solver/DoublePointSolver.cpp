@@ -50,6 +50,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.frontDiffusivity = frontDiffusivity(DragLaw{config.liquid.viscosity, config.liquid.density},
                                               s.permeability, m.grainDensity, config.gravity, m.maxPorosity, h,
                                               m.frontDiffusion);
+        s.frontThreshold = m.frontThreshold;
         s.particlePhase = m.particlePhase == ParticlePhaseModel::FoscoloGibilaro;
         s.elasticForce = {m.particleGrainSize, m.grainDensity, config.liquid.density, config.gravity};
         anyParticlePhase_ = anyParticlePhase_ || s.particlePhase;

@@ -67,6 +67,7 @@ struct SolidMaterial {
     std::shared_ptr<const ConstitutiveModel> model;  ///< the skeleton's stress-strain law
     SuspensionViscosity suspension;                  ///< viscosity once fluidised
     Real frontDiffusivity = 0;                       ///< m2/s, D (physics/FrontDiffusion.hpp)
+    Real frontThreshold = 0;                         ///< -, s: D fades below a change of s over a cell
     bool particlePhase = false;                      ///< with Foscolo and Gibilaro's force once fluidised
     FoscoloGibilaro elasticForce;                    ///< its modulus (physics/ParticlePhase.hpp)
     PermeabilityLaw permeability;

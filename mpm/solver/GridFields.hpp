@@ -136,9 +136,11 @@ struct CellSandState {
     std::vector<char> fluidised;    ///< the liquid state: the sand carries no effective stress
     std::vector<char> stressFree;   ///< the sand carries no stress: fluidised, or all its points stress free
     std::vector<Real> diffusivity;  ///< m2/s, the front diffusion's D in the cell
+    /// 1 / s^2 of the front diffusion's threshold s in the cell (0: none, D in full)
+    std::vector<Real> inverseThreshold2;
 
     void resize(Index cells) {
-        for (auto* a : {&porosity, &diffusivity}) a->assign(cells, 0.0);
+        for (auto* a : {&porosity, &diffusivity, &inverseThreshold2}) a->assign(cells, 0.0);
         for (auto* a : {&surface, &fluidised, &stressFree}) a->assign(cells, 0);
     }
 };

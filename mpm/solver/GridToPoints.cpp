@@ -58,6 +58,17 @@ void DoublePointSolver<D>::gridToPoints() {
     // at the node above, a strain of -1.21 in one step, a porosity of 3.98.)
     // The solid's update, with the front diffusion's sums only on steps that have any: with no
     // diffusion node no point diffuses (its weights sum to 1, so some node with N > 0 is not one)
+    // The front diffusion's D at a point of cell c with the solid fraction's gradient there: in
+    // full at a front, fading as (h |grad phi| / s)^2 where the porosity changes by less than the
+    // material's threshold s over a cell (physics/FrontDiffusion.hpp)
+    const Real h2 = grid_.h() * grid_.h();
+    auto frontDiffusivity = [&](Index c, const Real* gradPhi) {
+        const Real inverse2 = sand_.inverseThreshold2[c];
+        if (inverse2 == 0) return sand_.diffusivity[c];
+        Real g2 = 0;
+        for (int d = 0; d < D; ++d) g2 += gradPhi[d] * gradPhi[d];
+        return sand_.diffusivity[c] * std::min(Real(1), h2 * g2 * inverse2);
+    };
     auto solidPoint = [&](Index p, auto withDiffusion, auto linearShapes) {
         constexpr bool diffusion = decltype(withDiffusion)::value;
         constexpr bool linear = decltype(linearShapes)::value;
@@ -109,7 +120,7 @@ void DoublePointSolver<D>::gridToPoints() {
             // the front diffusion moves the point; it is not part of its velocity. Next to a
             // wall it does not move it towards or away from the wall: no flux through the wall,
             // whatever the field beside it (the gradient there is one-sided)
-            const Real w = diffuses && !held[d] ? -sand_.diffusivity[cell] * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
+            const Real w = diffuses && !held[d] ? -frontDiffusivity(cell, gradPhi) * gradPhi[d] / std::max(Real(1e-3), 1 - gridPorosity) : 0;
             solid_.x[p * D + d] = std::clamp(solid_.x[p * D + d] + dt * (vNew[d] + w), sandLowest[d], extent[d]);
         }
         for (int d = 0; d < D; ++d)
@@ -206,7 +217,7 @@ void DoublePointSolver<D>::gridToPoints() {
                 for (int d = 0; d < D - 1; ++d) held[d] = held[d] || (N > 0 && masks_.liquidFixed[i * D + d]);
             }
         });
-        const Real k = diffuses ? sand_.diffusivity[liquid_.shape.cell[p]] / std::max(Real(1e-3), 1 - sand) : 0;
+        const Real k = diffuses ? frontDiffusivity(liquid_.shape.cell[p], gradPhi) / std::max(Real(1e-3), 1 - sand) : 0;
         if (axisymmetric) div += vNew[0] / liquid_.x[p * D];  // the hoop strain rate v_r / r
         for (int d = 0; d < D; ++d) {
             liquid_.v[p * D + d] += dv[d];  // FLIP

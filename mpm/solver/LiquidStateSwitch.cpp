@@ -21,18 +21,21 @@ void DoublePointSolver<D>::switchLiquidState() {
         }
         // the cell's previous state is that of most of its solid mass; n_max the mass-weighted
         // one of its materials; stress-free if every solid-state point carries no effective stress
-        Real mass = 0, fluidMass = 0, nMax = 0, diffusivity = 0;
+        Real mass = 0, fluidMass = 0, nMax = 0, diffusivity = 0, threshold = 0;
         bool stressFree = true;
         for (Index p = first; p < last; ++p) {
             const Real m = solid_.mass[p];
             mass += m;
             nMax += m * materials_[solid_.material[p]].maxPorosity;
             diffusivity += m * materials_[solid_.material[p]].frontDiffusivity;
+            threshold += m * materials_[solid_.material[p]].frontThreshold;
             if (solid_.state[p] == kFluidisedState) fluidMass += m;
             else if (!isStressFree(&solid_.stress[p * 6])) stressFree = false;
         }
         nMax /= mass;
         sand_.diffusivity[c] = diffusivity / mass;
+        threshold /= mass;
+        sand_.inverseThreshold2[c] = threshold > 0 ? 1 / (threshold * threshold) : 0.0;
         // div v_S at the cell centre from this step's nodal velocities (extension positive). A
         // starved node (GridToPoints.cpp) counts with its fed weight w_i and, for the rest, the
         // cell's mass-weighted solid velocity: its own is a force over a sliver of mass

@@ -160,6 +160,12 @@ Outcome runWave(double wavelength, double cellSize, const WaveBed& spec = {}) {
     const DragLaw drag{c.liquid.viscosity, c.liquid.density};
     bed.diffusivity = frontDiffusivity(drag, PermeabilityLaw::from(sand), sand.grainDensity, c.gravity,
                                        sand.maxPorosity, c.grid.cellSize, sand.frontDiffusion);
+    if (sand.frontThreshold > 0) {
+        // the diffusion fades as (h |grad phi| / s)^2: on a wave of amplitude A, its first harmonic
+        // feels D (h k A / s)^2 3/4
+        const double r = cellSize * 2 * kPi / wavelength * kAmplitude / sand.frontThreshold;
+        bed.diffusivity *= std::min(1.0, 0.75 * r * r);
+    }
     if (sand.particlePhase == ParticlePhaseModel::FoscoloGibilaro)
         bed.particleModulus =
             FoscoloGibilaro{sand.particleGrainSize, sand.grainDensity, c.liquid.density, c.gravity}.modulus(n0);
@@ -286,4 +292,23 @@ TEST(FluidisedBedStability, LeadShotFormsVoidageWavesOnBothCells) {
         EXPECT_GT(o.expectedGrowth, 0);               // aggregative: the closed form grows
         EXPECT_GT(o.rmsEnd, 4 * o.rmsStart) << "h = " << h;
     }
+}
+
+// The front diffusion cut to the fronts (front_threshold = 0.01, as problem 7 runs it in
+// test_BedExpansion.cpp): on a wave of amplitude 1e-3 it keeps (h k A / 0.01)^2 3/4 = 0.1 % of
+// itself, and the particle phase decides the growth as without it (2026-12-07: -0.0097 1/s
+// against -0.0100, +2.8 %, on 3.1 mm cells; in full, the front diffusion would damp the wave at
+// -0.064 1/s, six times the closure).
+TEST(FluidisedBedStability, TheFrontDiffusionAtFrontsOnlyLeavesTheWaveToTheParticlePhase) {
+    QS_SEMI_IMPLICIT_ONLY();  // the same step as TheParticlePhaseDampsAWaveWhateverTheCell
+    WaveBed bed = closureBed(false, 12);
+    const auto closure = bed.material;
+    bed.material = [closure](MaterialConfig& m) {
+        closure(m);
+        m.frontDiffusion = 0.25;
+        m.frontThreshold = 0.01;
+    };
+    const Outcome o = runWave(0.0496, 0.0031, bed);
+    EXPECT_LT(std::abs(o.growthError), 0.10);
+    EXPECT_LT(std::abs(o.growthError), 0.04);  // a guard near what is reached
 }

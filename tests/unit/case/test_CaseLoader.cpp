@@ -805,6 +805,14 @@ TEST(CaseLoader, TheParticlePhaseNeedsTheGrainsSizeInMetres) {
     }
     const std::string off = replaced(kMinimal, "porosity = 0.38\n", "porosity = 0.38\nfront_diffusion = 0\n");
     EXPECT_DOUBLE_EQ(parseCase(off, kFile).materials.front().frontDiffusion, 0.0);
+    // its threshold, a porosity change over a cell: 0 (none) by default, in [0, 0.5]
+    EXPECT_DOUBLE_EQ(plain.materials.front().frontThreshold, 0.0);
+    for (const char* s : {"-0.01", "1"}) {
+        const std::string text = replaced(kMinimal, "porosity = 0.38\n", std::string("porosity = 0.38\nfront_threshold = ") + s + "\n");
+        expectError(text, "materials.sand.front_threshold", lineOf(text, "front_threshold"));
+    }
+    const std::string at = replaced(kMinimal, "porosity = 0.38\n", "porosity = 0.38\nfront_threshold = 0.01\n");
+    EXPECT_DOUBLE_EQ(parseCase(at, kFile).materials.front().frontThreshold, 0.01);
 }
 
 }  // namespace
