@@ -44,6 +44,14 @@ void printFluidised(std::ostream& out, const CaseConfig& config, const MaterialC
         out << ", Foscolo-Gibilaro u_e " << fg.elasticWaveSpeed(n) << " m/s: "
             << (fg.elasticWaveSpeed(n) > base.kinematicSpeed ? "particulate" : "aggregative") << " by their criterion";
     out << "\n";
+    if (m.particlePhase == ParticlePhaseModel::FoscoloGibilaro) {
+        // quicksand's own criterion, the water's inertia included (physics.md section 7)
+        const double c = base.kinematicSpeed, V0 = base.waterVelocity;
+        const double inertia = m.grainDensity * n * c * c + config.liquid.density * (1 - n) * (V0 - c) * (V0 - c);
+        out << "  quicksand's own criterion                rho_s n c^2 + rho_L phi (V0 - c)^2 = " << inertia
+            << " Pa against K = " << fg.modulus(n) << " Pa: " << (inertia < fg.modulus(n) ? "stable" : "unstable")
+            << "\n";
+    }
     out << "  what holds it uniform                    ";
     if (m.particlePhase == ParticlePhaseModel::FoscoloGibilaro)
         out << "particle phase K / B = " << fg.modulus(n) / base.dragCoefficient << " m2/s (K = " << fg.modulus(n)

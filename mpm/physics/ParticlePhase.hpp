@@ -29,6 +29,14 @@
 // Where. Where the front diffusion acts (solver/ParticlePhase.cpp): sand that carries no
 // effective stress, away from the filter, the surface's top two cells and the grid's bottom and
 // top rows. A skeleton that carries stress is held by its own stiffness.
+//
+// How it is discretised. K grad(phi) = grad(Pi), Pi(phi) the particle pressure with dPi/dphi = K:
+// each cell's Pi from its sand's own porosity, and at the nodes the transpose of the cells'
+// divergence, as the pore pressure's force is taken (solver/PressureForce.hpp). With the cells'
+// porosity changed by that same divergence, the pair is the compact three-point Laplacian on the
+// cells, which sees every grid mode, the cells' odd-even one at 40 % of its continuum rate (a
+// force from a gradient at the points, spread with the weights N_i, was the wide one,
+// (sin kh / kh)^2, and blind to that mode: a review found it).
 #include <cmath>
 
 #include "core/Types.hpp"
@@ -44,6 +52,11 @@ struct FoscoloGibilaro {
 
     /// Pa, K = 3.2 g d n (1 - n)(rho_s - rho_L) at porosity n
     Real modulus(Real n) const { return 3.2 * gravity * grainSize * n * (1 - n) * (grainDensity - liquidDensity); }
+    /// Pa, the particle pressure Pi(phi) whose gradient the force is: dPi/dphi = K,
+    /// Pi = 3.2 g d (rho_s - rho_L) (phi^2 / 2 - phi^3 / 3)
+    Real pressure(Real phi) const {
+        return 3.2 * gravity * grainSize * (grainDensity - liquidDensity) * phi * phi * (0.5 - phi / 3);
+    }
     /// m/s, FG's elastic wave speed u_e = sqrt(3.2 g d (1 - n)(rho_s - rho_L) / rho_s)
     Real elasticWaveSpeed(Real n) const {
         return std::sqrt(3.2 * gravity * grainSize * (1 - n) * (grainDensity - liquidDensity) / grainDensity);

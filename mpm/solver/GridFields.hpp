@@ -42,7 +42,6 @@ struct NodeFields {
     std::vector<Real> fedWeight;       ///< [D] -, how far the node is fed with sand, 1 for a held component
     std::vector<char> diffusionNode;   ///< where the front diffusion acts (FrontDiffusion.cpp)
     bool anyDiffusion = false;         ///< whether any node is one
-    std::vector<char> particlePhaseNode;  ///< where the particle phase's force acts (ParticlePhase.cpp)
 
     /// The fields carried from one step to the next (checkpointed as nodes/NAME).
     template <class F>
@@ -56,7 +55,6 @@ struct NodeFields {
         for (auto* a : {&momS, &momL, &forceS, &forceL, &velS, &velL, &velLIncrement, &fedWeight})
             a->assign(nodes * D, 0.0);
         diffusionNode.assign(nodes, 0);
-        particlePhaseNode.assign(nodes, 0);
     }
 };
 
@@ -138,9 +136,11 @@ struct CellSandState {
     std::vector<Real> diffusivity;  ///< m2/s, the front diffusion's D in the cell
     /// 1 / s^2 of the front diffusion's threshold s in the cell (0: none, D in full)
     std::vector<Real> inverseThreshold2;
+    /// Pa, the particle phase's pressure Pi in the cell, NaN where it does not act (ParticlePhase.cpp)
+    std::vector<Real> particlePressure;
 
     void resize(Index cells) {
-        for (auto* a : {&porosity, &diffusivity, &inverseThreshold2}) a->assign(cells, 0.0);
+        for (auto* a : {&porosity, &diffusivity, &inverseThreshold2, &particlePressure}) a->assign(cells, 0.0);
         for (auto* a : {&surface, &fluidised, &stressFree}) a->assign(cells, 0);
     }
 };

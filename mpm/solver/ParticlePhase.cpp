@@ -1,47 +1,59 @@
 // Phase 3 of the double-point step, in computeForces: the fluidised sand's particle phase,
-// Foscolo and Gibilaro's elastic force (physics/ParticlePhase.hpp says why, and why as an
-// exchange force). Per solid point of a material that has it, inside sand without effective
-// stress (every node its stencil reaches is one: insideStressFreeSand, as the front diffusion),
-//   f = -K(n) grad(phi) V_p     on the grains,  +f's opposite on the water,
-// scattered with the point's weights N_i: the nodes' F_S -= N_i f, F_L += N_i f. grad(phi) is taken
-// at the point from its own stencil's nodal sand porosity, as the front diffusion takes it
-// (GridToPoints.cpp): compact, so that no grid mode of phi, the odd-even one included, escapes
-// it. The two phases' forces cancel node by node: the mixture's momentum is untouched.
+// Foscolo and Gibilaro's elastic force (physics/ParticlePhase.hpp says why, why as an exchange
+// force, and why in this form). With Pi the particle pressure, K grad(phi) = grad(Pi):
+//   cells:  Pi_c from the cell's sand porosity, where the sand carries no effective stress;
+//   nodes:  F_S,i += sum_c Pi_c V_c w_c,i   (the transpose of the cells' divergence, as the pore
+//           pressure's force: solver/PressureForce.hpp),  F_L,i -= the same,
+// at nodes whose cells all carry such sand (a node at the zone's edge gets nothing: no push on
+// the plug above an expansion front, nor on the filter). The two phases' forces cancel node by
+// node: the mixture's momentum is untouched.
+// The cells are decided from their points as the step finds them (each point fluidised or
+// without effective stress; points and their stresses are checkpointed), so that a resumed run,
+// and a repeated coupling window, take the same force as a straight run.
+#include <cmath>
+#include <limits>
+
+#include "materials/ConstitutiveModel.hpp"
 #include "solver/DoublePointSolver.hpp"
 #include "solver/Parallel.hpp"
-#include "solver/PointStencil.hpp"
 
 namespace qs {
 
 template <int D>
 void DoublePointSolver<D>::particlePhaseForces() {
     if (!anyParticlePhase_) return;
-    forAll(grid_.numNodes(), [&](Index i) { nodes_.particlePhaseNode[i] = insideStressFreeSand(i); });
-    // most steps of most runs have no stress-free sand
-    if (!anyOf(grid_.numNodes(), [&](Index i) { return nodes_.particlePhaseNode[i] != 0; })) return;
-    const bool linear = config_.grid.shapeFunctions != ShapeFunctionKind::Gimp;
-    withStencilKind(linear, [&](auto linearShapes) {
-        constexpr bool kLinear = decltype(linearShapes)::value;
-        forEachPointColoured(grid_, cells_.solidStart, slabRows(kLinear), [&](Index p) {
+    constexpr Real kOutside = std::numeric_limits<Real>::quiet_NaN();
+    std::vector<Real>& pressure = sand_.particlePressure;
+    forAllCells(grid_.numCells(), cells_.solidStart, [&](Index c) {
+        const Index first = cells_.solidStart[c], last = cells_.solidStart[c + 1];
+        bool inside = first < last && !sand_.surface[c];
+        Real mass = 0, pi = 0;
+        const Real phi = 1 - sand_.porosity[c];
+        for (Index p = first; p < last && inside; ++p) {
             const SolidMaterial& material = materials_[solid_.material[p]];
-            if (!material.particlePhase) return;
-            Real gradPhi[D] = {}, n = 0;
-            bool inside = true;
-            forEachNodeOfPoint<kLinear>(grid_, solid_, p, [&](Index i, Real N, const Real* gradN) {
-                for (int d = 0; d < D; ++d) gradPhi[d] -= gradN[d] * nodes_.sandPorosity[i];
-                n += N * nodes_.sandPorosity[i];
-                if (N > 0 && !nodes_.particlePhaseNode[i]) inside = false;
-            });
-            if (!inside) return;
-            const Real KV = material.elasticForce.modulus(n) * solid_.volume[p];
-            forEachNodeOfPoint<kLinear>(grid_, solid_, p, [&](Index i, Real N, const Real*) {
-                for (int d = 0; d < D; ++d) {
-                    const Real f = N * KV * gradPhi[d];
-                    nodes_.forceS[i * D + d] -= f;
-                    nodes_.forceL[i * D + d] += f;
-                }
-            });
+            const bool free = solid_.state[p] == kFluidisedState || isStressFree(&solid_.stress[p * 6]);
+            inside = material.particlePhase && free;
+            mass += solid_.mass[p];
+            pi += solid_.mass[p] * material.elasticForce.pressure(phi);
+        }
+        pressure[c] = inside ? pi / mass : kOutside;
+    });
+    const Index rowStride = grid_.nodeStride(D - 1), lastRow = grid_.nodes(D - 1) - 1;
+    forAll(grid_.numNodes(), [&](Index i) {
+        const Index row = i / rowStride;
+        if (!(nodes_.massS[i] > 0) || masks_.solidFixed[i * D + D - 1] || row == 0 || row == lastRow) return;
+        Real f[D] = {};
+        bool inside = true;
+        grid_.forEachCellOfNode(i, [&](Index c, int corner) {
+            if (std::isnan(pressure[c])) inside = false;
+            const Real piV = pressure[c] * grid_.cellVolume(c);
+            for (int a = 0; a < D; ++a) f[a] += piV * grid_.divergenceWeight(c, corner, a);
         });
+        if (!inside) return;
+        for (int a = 0; a < D; ++a) {
+            nodes_.forceS[i * D + a] += f[a];
+            nodes_.forceL[i * D + a] -= f[a];
+        }
     });
 }
 

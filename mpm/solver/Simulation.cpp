@@ -543,7 +543,8 @@ RunSummary RunOf<D>::finish() {
         if (i.iterations > 0) std::printf("%.1f iterations per solve", double(i.iterations) / double(i.solves));
         std::printf(")\n");
         if (i.cappedSteps > 0)
-            std::printf("quicksand: %ld steps ended their active set (the water's bound) unsettled\n", i.cappedSteps);
+            std::printf("quicksand: %ld steps ended their active set (the water's bound%s) unsettled\n", i.cappedSteps,
+                        i.wallPasses > 0 ? ", or a rough wall's stick or slip" : "");
         if (i.wallPasses > 0)
             std::printf("quicksand: %ld passes (%.3g %% of the solves) were taken again because the pressure increment "
                         "overturned a rough wall's stick or slip\n", i.wallPasses, 100.0 * double(i.wallPasses) / double(i.solves));

@@ -204,6 +204,9 @@ void compareWithOneRank(const CaseConfig& config, int steps = kSteps, bool until
     const IntegratorStats sa = one->solver->integratorStats(), sb = many.solver->integratorStats();
     EXPECT_EQ(sa.solves, sb.solves) << "the active set's passes";
     EXPECT_EQ(sa.wallPasses, sb.wallPasses) << "the passes the rough walls' decisions took again";
+    if (sa.steps > 0 && config.column.wallFrictionAngle > 0) {
+        EXPECT_GT(sa.wallPasses, 0) << "the walls' second look must have overturned some decision to be tested";
+    }
     if (config.reservoir.head > 4) {
         EXPECT_GT(sa.solves, sa.steps) << "the surge must engage the active set";
     }

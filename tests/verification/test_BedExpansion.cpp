@@ -209,10 +209,10 @@ TEST(BedExpansionIn3D, PlugAndFrontMatchDriftFluxOverTheFirst10Seconds) {
 // With the particle phase (issue 42, item 2) and the front diffusion cut to the fronts
 // (front_threshold = 0.01: it fades where the porosity changes by less than 0.01 over a cell),
 // problem 7 keeps the shipped grid's guards (2026-12-07: H2 -0.08 %, plug -0.01 %, front +0.06 %,
-// the expanded bed's cells within 0.0030 and points within 0.0055, behind the front 0.0091 and
-// 0.0108). The particle phase alone cannot hold the fronts on such cells (front_diffusion = 0:
+// the expanded bed's cells within 0.0028 and points within 0.0054, behind the front 0.0090 and
+// 0.0107). The particle phase alone cannot hold the fronts on such cells (front_diffusion = 0:
 // the front speed's fit fails, the bed's cells 0.035 off): its diffusion, K / B = 6.3e-7 m2/s,
-// makes a front some 0.1 mm wide, far below the cell, so the grid's diffusion stays at the
+// makes a front about 4 K / (B c) = 0.4 mm wide, far below the cell, so the grid's diffusion stays at the
 // fronts, and the threshold keeps it off the small perturbations whose growth the closure decides
 // (test_FluidisedBedStability.cpp). Without the particle phase the threshold leaves the wake at
 // 0.0103, past its 0.01.

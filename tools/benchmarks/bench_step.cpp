@@ -127,6 +127,40 @@ void BM_Piping(benchmark::State& state) {
 BENCHMARK_TEMPLATE(BM_Piping, 2)->Name("BM_Piping2D")->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond)->MinTime(2.0);
 BENCHMARK_TEMPLATE(BM_Piping, 3)->Name("BM_Piping3D")->Arg(0)->Arg(1)->Unit(benchmark::kMillisecond)->MinTime(2.0);
 
+/// A fluidised bed in 2D, the P0 sand of problem 7 held at n = 0.452 by its equilibrium flux on
+/// 6.2 mm cells, 24 across: every cell is stress-free sand, so the particle phase and the front
+/// diffusion act everywhere. /0 as shipped (no particle phase), /1 with Foscolo and Gibilaro's
+/// force and the front diffusion at fronts only (front_threshold = 0.01): their share of the step
+/// where they act (physics/ParticlePhase.hpp).
+void BM_FluidisedBed2D(benchmark::State& state) {
+    qs::CaseConfig c = qs::loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/bed_expansion");
+    c.grid.dimension = 2;
+    c.grid.width = 24 * c.grid.cellSize;
+    auto& m = c.materials.front();
+    m.porosity = 0.452;
+    m.maxPorosity = 0.41;
+    c.initial.state = qs::InitialState::Fluidised;
+    c.initial.filterVelocity = 1.380e-3;
+    c.gate.flux = 1.380e-3;
+    c.monitors.clear();
+    if (state.range(0) == 1) {
+        m.particlePhase = qs::ParticlePhaseModel::FoscoloGibilaro;
+        m.particleGrainSize = m.permeability.grainSize;
+        m.frontThreshold = 0.01;
+    }
+    auto reservoir = qs::makeReservoirModel(c);
+    qs::DoublePointSolver<2> solver(c, *reservoir);
+    for (int k = 0; k < 20; ++k) solver.step();
+    std::size_t updates = 0;
+    for (auto _ : state) {
+        solver.step();
+        updates += solver.solid().size() + solver.liquid().size();
+    }
+    state.SetItemsProcessed(static_cast<int64_t>(updates));
+    state.counters["points"] = static_cast<double>(solver.solid().size() + solver.liquid().size());
+}
+BENCHMARK(BM_FluidisedBed2D)->Arg(0)->Arg(1)->Unit(benchmark::kMicrosecond)->MinTime(2.0);
+
 /// The parallel regions of one step of BM_Step2D/50 and BM_Step3D/49 (callgrind's count of calls
 /// to GOMP_parallel over 60 steps: 1605, with the set-up's).
 constexpr int kPhasesPerStep = 26;
