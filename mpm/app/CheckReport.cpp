@@ -58,8 +58,12 @@ void printFluidised(std::ostream& out, const CaseConfig& config, const MaterialC
             << " Pa), ";
     else
         out << "no particle phase (materials." << m.name << ".particle_phase = \"none\"), ";
-    out << "front diffusion " << D << " m2/s (alpha " << m.frontDiffusion << " on " << config.grid.cellSize
-        << " m cells)\n";
+    out << "front diffusion " << D << " m2/s (alpha " << m.frontDiffusion << " on " << config.grid.cellSize << " m cells";
+    if (m.frontThreshold > 0) out << ", fading below a porosity change of " << m.frontThreshold << " over a cell";
+    out << ")\n";
+    if (m.particlePhase == ParticlePhaseModel::None && (m.frontDiffusion == 0 || m.frontThreshold > 0))
+        out << "  note: with the front diffusion cut and no particle phase, nothing holds a small porosity perturbation "
+               "of the fluidised sand: its equations are unstable at every wavelength (physics.md section 7)\n";
 }
 }  // namespace
 
