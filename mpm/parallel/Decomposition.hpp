@@ -85,7 +85,9 @@ struct Decomposition {
 /// exercised (cavities), and one for uGIMP. A layer costs: piping3D at 6.2 mm on 2 ranks stepped
 /// 75 % of the serial points a rank with 3 layers, 67 % with 2. Before the carried state was
 /// shared, 4 layers left the axisymmetric bed on 3 ranks 3e-10 off: an error carried from the
-/// window's edge one cell inwards a step.
+/// window's edge one cell inwards a step. The particle phase (solver/ParticlePhase.cpp) uses the
+/// spare linear layer: a node on the cut reads the particle pressure of window cells one out,
+/// which read the nodal porosity of cells two out (a review's count; not yet run on ranks).
 int ghostPointLayers(const CaseConfig& config);
 
 /// Cuts the case's grid into `ranks` blocks of whole columns (see above). Throws qs::Error

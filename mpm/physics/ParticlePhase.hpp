@@ -31,12 +31,10 @@
 // top rows. A skeleton that carries stress is held by its own stiffness.
 //
 // How it is discretised. K grad(phi) = grad(Pi), Pi(phi) the particle pressure with dPi/dphi = K:
-// each cell's Pi from its sand's own porosity, and at the nodes the transpose of the cells'
-// divergence, as the pore pressure's force is taken (solver/PressureForce.hpp). With the cells'
-// porosity changed by that same divergence, the pair is the compact three-point Laplacian on the
-// cells, which sees every grid mode, the cells' odd-even one at 40 % of its continuum rate (a
-// force from a gradient at the points, spread with the weights N_i, was the wide one,
-// (sin kh / kh)^2, and blind to that mode: a review found it).
+// each cell's Pi from its sand's porosity, and at the nodes the transpose of the cells'
+// divergence, as the pore pressure's force is taken (solver/PressureForce.hpp): a mask fresh from
+// the points each step, no push at the edge of the zone it acts in. It is still the wide
+// difference on the nodes' porosity (solver/ParticlePhase.cpp says what it cannot see).
 #include <cmath>
 
 #include "core/Types.hpp"

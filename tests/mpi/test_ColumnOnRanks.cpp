@@ -244,6 +244,27 @@ TEST(ColumnOnRanks, RoughWallsStepAsOnOneRank) {
                                      "grid.cross_section_area=0.04981824", "column.wall_friction_angle=30"}));
 }
 
+TEST(ColumnOnRanks, AFluidisedBedWithTheParticlePhaseStepsAsOnOneRank) {
+    // problem 7's P0 sand held fluidised at n = 0.452 in 2D, 24 columns, a lateral porosity wave
+    // across the cuts, Foscolo and Gibilaro's force (solver/ParticlePhase.cpp) and the front
+    // diffusion at fronts only: a node on a cut reads the particle pressure of the window's cells
+    CaseConfig c = loadCase(std::string(QUICKSAND_SOURCE_DIR) + "/cases/verification/bed_expansion");
+    c.grid.dimension = 2;
+    c.grid.width = 24 * c.grid.cellSize;
+    auto& m = c.materials.front();
+    m.porosity = 0.452;
+    m.particlePhase = ParticlePhaseModel::FoscoloGibilaro;
+    m.particleGrainSize = m.permeability.grainSize;
+    m.frontThreshold = 0.01;
+    c.initial.state = InitialState::Fluidised;
+    c.initial.filterVelocity = 1.380e-3;
+    c.gate.flux = 1.380e-3;
+    c.initial.porosityWave = {true, 0.01, c.grid.width, true};
+    c.monitors.clear();
+    c.liquid.bulkModulusGiven = true;
+    compareWithOneRank<2>(c);
+}
+
 TEST(ColumnOnRanks, UGimpStepsAsOnOneRank) {
     compareWithOneRank<2>(randomBed({"grid.width=0.1488", "grid.shape_functions=\"gimp\""}));
 }
