@@ -102,20 +102,26 @@ TEST(BedExpansion, CoarseGrid) {
     EXPECT_LT(std::abs(e.front), 0.03);
 }
 
-TEST(BedExpansion, ShippedGrid) {
-    const Errors e = runExpansion(0.0062);
+namespace {
+/// The shipped grid's guards near what it achieves (docs/verification.md)
+void expectShippedGridGuards(const Errors& e) {
     expectWithinTolerances(e);
     EXPECT_LT(std::abs(e.height), 0.006);
     EXPECT_LT(std::abs(e.plug), 0.005);
     EXPECT_LT(std::abs(e.front), 0.01);
+    EXPECT_LT(e.cellPorosity, 0.005);
+    EXPECT_LT(e.pointPorosity, 0.008);
+}
+}  // namespace
+
+TEST(BedExpansion, ShippedGrid) {
+    expectShippedGridGuards(runExpansion(0.0062));
     // The expanded bed's spread at the end depends on round-off: the coloured scatter's order of
     // summation (slabs of 1 to 8 rows, all valid orders in 1D, where the scatter is serial) gave
     // cells within 0.0022 and points within 0.0025-0.0029 for six orders (2 rows, the one used:
     // 0.0022, 0.0029), and 0.0041-0.0042 and 0.0068-0.0070 for two (1 and 7 rows). H2 moved between
     // -0.09 % and -0.21 %; plug and front speeds within 0.01 % of each other, the wake the same.
     // The guards sit above both outcomes (docs/verification.md).
-    EXPECT_LT(e.cellPorosity, 0.005);
-    EXPECT_LT(e.pointPorosity, 0.008);
 }
 
 TEST(BedExpansion, AnExpandedBedAtUniformPorosityStaysUniform) {
@@ -223,10 +229,5 @@ TEST(BedExpansion, WithTheParticlePhaseAndTheFrontDiffusionAtFrontsOnly) {
         m.particleGrainSize = m.permeability.grainSize;
         m.frontThreshold = 0.01;
     });
-    expectWithinTolerances(e);
-    EXPECT_LT(std::abs(e.height), 0.006);
-    EXPECT_LT(std::abs(e.plug), 0.005);
-    EXPECT_LT(std::abs(e.front), 0.01);
-    EXPECT_LT(e.cellPorosity, 0.005);
-    EXPECT_LT(e.pointPorosity, 0.008);
+    expectShippedGridGuards(e);
 }
