@@ -26,9 +26,11 @@
 // Its effect on the kinematic waves is a diffusion K / B (B the drag's slip coefficient,
 // section 7), which unlike the front diffusion does not depend on the cell.
 //
-// Where. Where the front diffusion acts (solver/ParticlePhase.cpp): sand that carries no
-// effective stress, away from the filter, the surface's top two cells and the grid's bottom and
-// top rows. A skeleton that carries stress is held by its own stiffness.
+// Where. Much where the front diffusion acts (solver/ParticlePhase.cpp): at nodes whose cells all
+// hold sand whose points are fluidised or carry no effective stress, away from the filter, the
+// surface's top two cells and the grid's bottom and top rows (the front diffusion takes the
+// liquid-state switch's verdict of the step instead). A skeleton that carries stress is held by
+// its own stiffness.
 //
 // How it is discretised. K grad(phi) = grad(Pi), Pi(phi) the particle pressure with dPi/dphi = K:
 // each cell's Pi from its sand's porosity, and at the nodes the transpose of the cells'
