@@ -171,7 +171,7 @@ TEST(BedExpansion, AnExpandedBedAtUniformPorosityStaysUniform) {
 class BedExpansionIn : public ::testing::TestWithParam<Geometry> {};
 
 TEST_P(BedExpansionIn, MatchesDriftFluxOverTheWholeExpansion) {
-    QS_SEMI_IMPLICIT_ONLY();  // explicit: BedExpansionIn3D and BedExpansion2D
+    QS_SEMI_IMPLICIT_ONLY();  // explicit: BedExpansion2D
     const Errors e = runExpansion(0.0124, [](CaseConfig& c) { inGeometry(c, GetParam()); });
     expectWithinTolerances(e);
     EXPECT_LT(std::abs(e.height), 0.01);
@@ -183,6 +183,10 @@ INSTANTIATE_TEST_SUITE_P(Geometries, BedExpansionIn, ::testing::Values(Geometry:
                          geometryName);
 
 TEST(BedExpansionIn3D, PlugAndFrontMatchDriftFluxOverTheFirst10Seconds) {
+    // Semi-implicit only since 2026-12-08 (CI's time: 115 s explicit, 28 s semi-implicit; both gave
+    // +0.01 %, -1.63 %): the explicit step's expansion is checked in 1D and in 2D
+    // (BedExpansion2D), its 3D step by the 3D critical gradient and falling head.
+    QS_SEMI_IMPLICIT_ONLY();
     // 2 x 2 cells of 12.4 mm; the front is fitted from 3 s, the plug from 2 s to 10 s
     double plug = 0, front = 0, spread = 0;
     const CaseRun run = runVerificationCase("bed_expansion", [](CaseConfig& c) {

@@ -28,6 +28,21 @@ namespace {
 
 constexpr double kN0 = 0.452, kAmplitude = 1e-3;
 
+/// The least-squares slope of y against t, and its r^2 where asked.
+double slopeOf(const std::vector<double>& t, const std::vector<double>& y, double* r2) {
+    const double n = static_cast<double>(t.size());
+    double st = 0, sy = 0, stt = 0, sty = 0, syy = 0;
+    for (std::size_t i = 0; i < t.size(); ++i) {
+        st += t[i]; sy += y[i]; stt += t[i] * t[i]; sty += t[i] * y[i]; syy += y[i] * y[i];
+    }
+    const double b = (n * sty - st * sy) / (n * stt - st * st);
+    if (r2) {
+        const double a = (sy - b * st) / n, ssTot = syy - sy * sy / n, ssRes = syy - a * sy - b * sty;
+        *r2 = ssTot > 0 ? 1 - ssRes / ssTot : 1;
+    }
+    return b;
+}
+
 struct WaveFit {
     double growth = 0;      ///< 1/s, d ln A / dt
     double speed = 0;       ///< m/s, the crests' speed up the column
@@ -74,19 +89,7 @@ WaveFit fitWave(const CaseRun& run, double k, double zFilter, double z0, double 
         if (std::getenv("QS_WAVE_TRACE"))
             std::printf("  t %.2f  A %.4e  theta %.4f  mean %.5f\n", t.back(), std::exp(lnA.back()), th, x[0]);
     }
-    auto slope = [&](const std::vector<double>& y, double* r2) {
-        const double n = static_cast<double>(t.size());
-        double st = 0, sy = 0, stt = 0, sty = 0, syy = 0;
-        for (std::size_t i = 0; i < t.size(); ++i) {
-            st += t[i]; sy += y[i]; stt += t[i] * t[i]; sty += t[i] * y[i]; syy += y[i] * y[i];
-        }
-        const double b = (n * sty - st * sy) / (n * stt - st * st);
-        if (r2) {
-            const double a = (sy - b * st) / n, ssTot = syy - sy * sy / n, ssRes = syy - a * sy - b * sty;
-            *r2 = ssTot > 0 ? 1 - ssRes / ssTot : 1;
-        }
-        return b;
-    };
+    auto slope = [&](const std::vector<double>& y, double* r2) { return slopeOf(t, y, r2); };
     WaveFit fit;
     fit.growth = slope(lnA, &fit.r2);
     fit.speed = -slope(theta, nullptr) / k;
@@ -126,6 +129,9 @@ struct WaveBed {
     double thickness = 48 * 0.0062;  ///< m: room for the wave to rise
     double end = 6.0, outputInterval = 0.25;  ///< s
     std::function<void(MaterialConfig&)> material;
+    /// a lateral wave n0 + A cos(k x) in a 2D bed half a wavelength wide (its smooth walls are
+    /// the cosine's planes of symmetry) instead of the vertical one
+    bool lateral = false;
 };
 
 /// The case of the wave of `wavelength` on cells of `cellSize` in `spec`'s bed, run.
@@ -147,7 +153,11 @@ CaseRun runWaveCase(double wavelength, double cellSize, const WaveBed& spec) {
     c.column.overflowLevel = c.column.waterLevel;
     c.column.top = c.column.waterLevel + 2 * 0.0062;
     c.monitors.front().elevation = c.filterLevel() + 0.5 * c.layers.front().thickness;
-    c.initial.porosityWave = {true, kAmplitude, wavelength, false};
+    if (spec.lateral) {
+        c.grid.dimension = 2;
+        c.grid.width = wavelength / 2;
+    }
+    c.initial.porosityWave = {true, kAmplitude, wavelength, spec.lateral};
     c.time.end = spec.end;
     c.time.outputInterval = spec.outputInterval;
     return runConfig(c);
@@ -330,4 +340,111 @@ TEST(FluidisedBedStability, TheFrontDiffusionAtFrontsOnlyLeavesTheWaveToTheParti
     const Outcome o = runWave(0.0496, 0.0031, bed);
     EXPECT_LT(std::abs(o.growthError), 0.10);
     EXPECT_LT(std::abs(o.growthError), 0.04);  // a guard near what is reached
+}
+
+// ---------------------------------------------------------------------------------------------
+// Lateral modes (physics.md section 7, "Lateral and oblique modes"): a porosity pattern across the
+// bed n0 + A cos(k x), uniform up it.
+
+namespace {
+
+struct LateralFit {
+    double growth = 0;  ///< 1/s, d ln a / dt of the cosine's amplitude a over the middle rows
+    double r2 = 0;
+    double firstAmplitude = 0, lastAmplitude = 0;
+};
+
+/// The cosine's amplitude a = sum n cos(k x) / sum cos^2(k x) over the sand cells of rows whose
+/// centres lie in [z0, z1] (cos(k x) sums to zero over a row half a wavelength wide), at each
+/// output, and ln a against t.
+LateralFit fitLateralWave(const CaseRun& run, double k, double z0, double z1) {
+    std::vector<double> t, lnA;
+    for (std::size_t o = 0; o < run.cells.size(); ++o) {
+        const SandCells& s = run.cells[o];
+        double num = 0, den = 0;
+        for (Index row = s.baseRow; row < s.rows(); ++row) {
+            const double z = s.filterLevel + (static_cast<double>(row - s.baseRow) + 0.5) * s.h;
+            if (z < z0 || z > z1) continue;
+            for (Index col = 0; col < s.columns(); ++col) {
+                const Index c = s.cell(col, row);
+                if (s.state[c] == CellSand::None) continue;
+                const double f = std::cos(k * (static_cast<double>(col) + 0.5) * s.h);
+                num += f * s.porosity[c];
+                den += f * f;
+            }
+        }
+        t.push_back(run.series[o].time);
+        lnA.push_back(std::log(std::abs(num / den)));
+        if (std::getenv("QS_WAVE_TRACE")) std::printf("  t %.2f  a %.5e\n", t.back(), num / den);
+    }
+    LateralFit fit;
+    fit.growth = slopeOf(t, lnA, &fit.r2);
+    fit.firstAmplitude = std::exp(lnA.front());
+    fit.lastAmplitude = std::exp(lnA.back());
+    return fit;
+}
+
+struct LateralOutcome {
+    double growth = 0, expected = 0, error = 0;
+};
+
+LateralOutcome runLateralWave(double wavelength, double cellSize, WaveBed spec) {
+    spec.lateral = true;
+    const CaseRun run = runWaveCase(wavelength, cellSize, spec);
+    const CaseConfig& c = run.config;
+    const auto& sand = c.material("sand");
+    closed::FluidisedBed bed;
+    bed.suspension = closed::SuspensionFlux::of(c, sand);
+    bed.porosity = spec.n0;
+    bed.maxPacking = 1 - sand.minPorosity;
+    if (sand.particlePhase == ParticlePhaseModel::FoscoloGibilaro)
+        bed.particleModulus =
+            FoscoloGibilaro{sand.particleGrainSize, sand.grainDensity, c.liquid.density, c.gravity}.modulus(spec.n0);
+    const double k = 2 * kPi / wavelength;
+    const double expected = bed.growth(k, 0).real();
+    const double H = c.sandTop() - c.filterLevel();
+    const LateralFit fit = fitLateralWave(run, k, c.filterLevel() + 0.25 * H, c.filterLevel() + 0.75 * H);
+    // relative to the closed form's rate; a neutral mode's (0) is judged by the caller
+    LateralOutcome out{fit.growth, expected, expected != 0 ? (fit.growth - expected) / std::abs(expected) : 0.0};
+    std::printf("lateral lambda %.4f m, h %.5f m: growth %.5f 1/s (closed form %.5f, %+.1f %%; ln a r^2 %.3f), a %.3e -> %.3e\n",
+                wavelength, cellSize, fit.growth, expected, 100 * out.error, fit.r2, fit.firstAmplitude, fit.lastAmplitude);
+    return out;
+}
+
+}  // namespace
+
+// A lateral pattern, 16 cells a wavelength of 49.6 mm, in the middle half of the bed over its first
+// 0.6 s. The closed form: neutral without the particle phase; with it, smoothed at
+// K k^2 n0 phi0 / beta = (K/B) k^2 = 0.0101 1/s (the grains pushed down the porosity's lateral
+// gradient against the slip's drag). Why so short a look: the denser columns, heavier by
+// Delta rho g phi', sink as a whole (the water with the grains, physics.md) and turn at the filter
+// and at the top, and once the columns have moved some 2 mm against each other (0.6 s) the
+// points' crossing of cell faces scatters the cells' porosity by more than the closure's change.
+// Until then the middle rows are clean (ln a against t: r^2 = 1.000). 2026-12-08: -0.00973 1/s
+// (+4.0 %) with it, -0.00011 without; on 1.55 mm cells (2 min, not in the suite) -0.01001
+// (+1.2 %). The shortfall falls as (kh)^2, as the closure's wide stencil says (sin(kh)/(kh))^2:
+// 5 % and 1.3 %). Semi-implicit only (CI's time: the explicit step took 3 min for 1.25 s);
+// the force is the same code in both (computeForces). QS_LATERAL_FINE=1 adds
+// the 1.55 mm run.
+TEST(FluidisedBedStability, TheParticlePhaseSmoothsALateralPatternAtItsClosedFormRate) {
+    QS_SEMI_IMPLICIT_ONLY();
+    WaveBed bed = closureBed(false, 0.6);
+    bed.outputInterval = 0.05;
+    const LateralOutcome with = runLateralWave(0.0496, 0.0031, bed);
+    EXPECT_LT(with.expected, 0);
+    EXPECT_LT(std::abs(with.error), 0.10);
+    EXPECT_LT(std::abs(with.error), 0.055);  // a guard near what is reached
+    const auto closure = bed.material;
+    bed.material = [closure](MaterialConfig& m) {
+        closure(m);
+        m.particlePhase = ParticlePhaseModel::None;
+    };
+    const LateralOutcome without = runLateralWave(0.0496, 0.0031, bed);
+    EXPECT_NEAR(without.expected, 0, 1e-12);
+    // neutral: within 5 % of the closure's rate (reached 1.1 %)
+    EXPECT_LT(std::abs(without.growth), 0.05 * std::abs(with.expected));
+    if (std::getenv("QS_LATERAL_FINE")) {  // the 1.55 mm figure above
+        bed.material = closure;
+        runLateralWave(0.0496, 0.00155, bed);
+    }
 }
