@@ -15,7 +15,13 @@
 set -euo pipefail
 cd "$(dirname "${BASH_SOURCE[0]}")/.."
 
+# Each stage's wall time is said at the end (CI's 45 minutes: which stage to cut)
+stage_times=()
+stage_start=$SECONDS
+stage_done() { stage_times+=("$1 $((SECONDS - stage_start)) s"); stage_start=$SECONDS; }
+
 bash tools/build.sh --openfoam --mpi --slurm   # CI runs the OpenFOAM, MPI and Slurm tests too
+stage_done "set-up and build:"
 
 build_dir="${QUICKSAND_BUILD_DIR:-build}"
 log="$(mktemp)"
@@ -27,6 +33,7 @@ set +e
 ctest --test-dir "$build_dir" --output-on-failure --no-tests=error -j2 "$@" 2>&1 | tee "$log"
 rc=${PIPESTATUS[0]}
 set -e
+stage_done "ctest:"
 
 # The fast labels again under AddressSanitizer and UndefinedBehaviorSanitizer (no OpenFOAM, which
 # is not built for them; the slow verification runs stay out to keep CI short). Only when the whole
@@ -74,14 +81,18 @@ python_stage() {
 
 if [[ $# -eq 0 ]]; then
     if ! python_stage; then echo "test.sh: the Python package's tests failed" >&2; rc=1; fi
+    stage_done "pytest:"
 fi
 if [[ $# -eq 0 && "${QUICKSAND_SANITIZE:-1}" != 0 ]]; then
     if ! sanitizer_stage; then echo "test.sh: the sanitizer stage failed" >&2; rc=1; fi
+    stage_done "sanitizers (build and run):"
 fi
 if [[ $# -eq 0 && "${QUICKSAND_FUZZ:-1}" != 0 ]]; then
     if ! fuzz_stage; then echo "test.sh: the fuzzing stage failed" >&2; rc=1; fi
+    stage_done "fuzzers (set-up, build and run):"
 fi
 
+for t in "${stage_times[@]}"; do echo "test.sh: $t"; done
 if [[ $# -eq 0 ]]; then
     # ctest's summary line of the whole suite, last, for CI
     grep -E '[0-9]+% tests passed, [0-9]+ tests? failed out of [0-9]+' "$log" | tail -1
