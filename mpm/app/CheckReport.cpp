@@ -8,6 +8,7 @@
 
 #include "core/Constants.hpp"
 #include "coupling/WindowedModel.hpp"
+#include "physics/ClosePacking.hpp"
 #include "physics/ClosedForms.hpp"
 #include "physics/PipeFriction.hpp"
 #include "physics/WaveSpeeds.hpp"
@@ -204,6 +205,12 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
         out << "  consolidation coefficient c_v            "
             << (kappa / mu) / (1 / Eoed + n / KL) << " m2/s\n";
         printFluidised(out, config, m);
+        if (m.closePacking) {
+            const double M = ClosePacking::modulusFor(schemeWaveSpeed(config) / 2, m.grainDensity, m.minPorosity);
+            out << "  close packing held below n_min           M = " << M << " Pa (a packing wave at half the step's "
+                << schemeWaveSpeed(config) << " m/s): a kPa holds a cell " << 1e3 * (1 - m.minPorosity) / M
+                << " under n_min\n";
+        }
     }
     // the step the solver takes (solver/RunSize.hpp): the same c_fast as the closed forms above,
     // from the materials' constitutive models

@@ -82,6 +82,9 @@ struct MaterialConfig {
     /// -, s: the front diffusion fades where the porosity changes by less than s over a cell,
     /// D (h |grad phi| / s)^2 below it (0: everywhere in full, as before)
     double frontThreshold = 0.0;
+    /// close packing held: a contact pressure on the grains where the grid's sand porosity falls
+    /// below min_porosity (physics/ClosePacking.hpp); off by default
+    bool closePacking = false;
 };
 
 /// A horizontal range [from, to] (m) on one horizontal axis; the whole width when absent.

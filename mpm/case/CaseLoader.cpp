@@ -47,7 +47,8 @@ constexpr const char* kMaterialKeys[] = {
     "model",          "grain_density", "porosity",       "max_porosity",    "min_porosity",
     "youngs_modulus", "poisson_ratio", "friction_angle", "dilatancy_angle", "cohesion",
     "tensile_strength", "k0",          "ergun",          "ergun_a",         "ergun_b",
-    "permeability",   "particle_phase", "particle_grain_size", "front_diffusion", "front_threshold"};
+    "permeability",   "particle_phase", "particle_grain_size", "front_diffusion", "front_threshold",
+    "close_packing"};
 constexpr const char* kPermeabilityKeys[] = {"mode", "value", "grain_size"};
 /// kg/m3: below this a grain density is taken for a unit mistake (g/cm3); the lightest
 /// granular media modelled this way (plastic beads) are about 1 000 kg/m3.
@@ -404,6 +405,7 @@ private:
         m.ergunB = s.optionalNumber("ergun_b", 1.75, nonNegative(""));
         m.permeability = readPermeability(s.subsection("permeability", kPermeability, true));
         readParticlePhase(s, m);
+        m.closePacking = s.boolean("close_packing", false);
         return m;
     }
 

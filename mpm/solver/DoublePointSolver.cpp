@@ -54,6 +54,9 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.particlePhase = m.particlePhase == ParticlePhaseModel::FoscoloGibilaro;
         s.elasticForce = {m.particleGrainSize, m.grainDensity, config.liquid.density, config.gravity};
         anyParticlePhase_ = anyParticlePhase_ || s.particlePhase;
+        s.packing.minPorosity = m.minPorosity;
+        if (m.closePacking) s.packing.modulus = ClosePacking::modulusFor(waveSpeed_ / 2, m.grainDensity, m.minPorosity);
+        anyClosePacking_ = anyClosePacking_ || m.closePacking;
         materials_.push_back(s);
     }
     // dt = C h / c: with implicit drag the fastest explicit wave is the zero-drag fast wave, and

@@ -45,6 +45,7 @@
 #include "physics/LiquidStateRule.hpp"
 #include "physics/FrontDiffusion.hpp"
 #include "physics/Pipes.hpp"
+#include "physics/ClosePacking.hpp"
 #include "physics/ParticlePhase.hpp"
 #include "physics/Permeability.hpp"
 #include "physics/SuspensionViscosity.hpp"
@@ -70,6 +71,7 @@ struct SolidMaterial {
     Real frontThreshold = 0;                         ///< -, s: D fades below a change of s over a cell
     bool particlePhase = false;                      ///< with Foscolo and Gibilaro's force once fluidised
     FoscoloGibilaro elasticForce;                    ///< its modulus (physics/ParticlePhase.hpp)
+    ClosePacking packing;                            ///< the contact pressure below n_min (modulus 0: none)
     PermeabilityLaw permeability;
 };
 
@@ -175,6 +177,7 @@ private:
     void pressureForces();            // PorePressure.cpp
     void gravityForces();             // Forces.cpp
     void particlePhaseForces();       // ParticlePhase.cpp
+    void packingForces();             // PackingPressure.cpp
     /// Whether node i lies inside sand that carries no effective stress, where the front
     /// diffusion and the particle phase act (FrontDiffusion.cpp)
     bool insideStressFreeSand(Index i) const;
@@ -256,6 +259,7 @@ private:
     bool damping_ = false;
     Real dampingAlpha_ = 0;
     bool anyParticlePhase_ = false;  ///< some material has a particle phase (particlePhaseForces)
+    bool anyClosePacking_ = false;   ///< some material holds its close packing (packingForces)
     Real weightShare_ = 1;           ///< the share of the grains' buoyant weight loaded (the gravity stage's ramp)
     Real gateFlux_ = 0, gatePressure_ = 0;
     Real cumulativeInflow_ = 0, outflowVolume_ = 0;

@@ -1,7 +1,8 @@
 // Phase 3 of the double-point step: the nodal forces (physics.md section 2). The effective
 // stress came with the points (PointsToGrid.cpp); here, in this order, which fixes each force
 // entry's sums to the bit: the pore pressure at the step's start (PorePressure.cpp), gravity, the
-// fluidised sand's particle phase (ParticlePhase.cpp), the gate's traction (Gate.cpp) and the
+// fluidised sand's particle phase (ParticlePhase.cpp), close packing's contact pressure
+// (PackingPressure.cpp), the gate's traction (Gate.cpp) and the
 // surcharge. Phase 4, the velocities, is the time scheme's
 // (solver/TimeIntegrator.hpp).
 #include "solver/DoublePointSolver.hpp"
@@ -17,6 +18,7 @@ void DoublePointSolver<D>::computeForces() {
     pressureForces();
     gravityForces();
     particlePhaseForces();
+    packingForces();
     gateTraction();
     // Surcharge on the sand top (solid phase), as a traction where the sand's surface is in each
     // column of cells (boundary/Surcharge.hpp). The water's surface needs none: with an overflow

@@ -138,9 +138,12 @@ struct CellSandState {
     std::vector<Real> inverseThreshold2;
     /// Pa, the particle phase's pressure Pi in the cell, NaN where it does not act (ParticlePhase.cpp)
     std::vector<Real> particlePressure;
+    /// Pa, close packing's contact pressure in the cell, 0 at or above n_min (PackingPressure.cpp)
+    std::vector<Real> packingPressure;
 
     void resize(Index cells) {
-        for (auto* a : {&porosity, &diffusivity, &inverseThreshold2, &particlePressure}) a->assign(cells, 0.0);
+        for (auto* a : {&porosity, &diffusivity, &inverseThreshold2, &particlePressure, &packingPressure})
+            a->assign(cells, 0.0);
         for (auto* a : {&surface, &fluidised, &stressFree}) a->assign(cells, 0);
     }
 };

@@ -773,6 +773,14 @@ TEST(CaseLoader, APorosityWaveNeedsAnAmplitudeAWavelengthAndLateralWalls) {
     expectError(none, "initial.porosity_wave.wavelength", lineOf(none, "[initial.porosity_wave]"));
 }
 
+TEST(CaseLoader, ClosePackingIsOffByDefaultAndTakesTrueOrFalse) {
+    EXPECT_FALSE(parseCase(kMinimal, kFile).materials.front().closePacking);
+    const std::string on = replaced(kMinimal, "porosity = 0.38\n", "porosity = 0.38\nclose_packing = true\n");
+    EXPECT_TRUE(parseCase(on, kFile).materials.front().closePacking);
+    const std::string word = replaced(kMinimal, "porosity = 0.38\n", "porosity = 0.38\nclose_packing = \"yes\"\n");
+    expectError(word, "materials.sand.close_packing", lineOf(word, "close_packing"));
+}
+
 TEST(CaseLoader, TheParticlePhaseNeedsTheGrainsSizeInMetres) {
     // none by default, the front diffusion at 0.25
     const CaseConfig plain = parseCase(kMinimal, kFile);
