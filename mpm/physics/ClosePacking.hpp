@@ -20,8 +20,11 @@
 // carries: a packing wave, c^2 = M / ((1 - n_min) rho_s) on the grains, at half the speed the step
 // is sized by (solver/RunSize.hpp: the water's fast wave under the explicit scheme, the skeleton's
 // under the semi-implicit one), so the step resolves it at half the case's Courant number. A cell
-// is then held past n_min by Pi / M: on cases/piping2D's explicit step (M about 2e7 Pa) 1e-4 under
-// a kPa; under the semi-implicit step (M about 3e5 Pa) 0.5 %.
+// is then held past n_min by (1 - n_min) Pi / M: on cases/piping2D's explicit step (M = 1.6e7 Pa)
+// 4e-5 under a kPa; under the semi-implicit step (M about 3e5 Pa) 0.2 %. M is the step's, not the
+// sand's: a case with real water under the explicit step (K_L = 2.2e9 Pa) gets some 1e9 Pa, and a
+// soft skeleton under the semi-implicit step one of its own load's order, which holds nothing
+// (docs/piping.md, "Close packing held").
 //
 // As a stress among the grains, it acts on the grains alone (the water is not pushed), and on
 // every sand cell whatever its points' state, so that a crowded cell pushes its grains into a
