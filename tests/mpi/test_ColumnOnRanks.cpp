@@ -265,6 +265,20 @@ TEST(ColumnOnRanks, AFluidisedBedWithTheParticlePhaseStepsAsOnOneRank) {
     compareWithOneRank<2>(c);
 }
 
+// DISABLED (2026-12-08): on 2 and 3 ranks one point's shear stress differs from one rank's by
+// 4.2e-11 of the scale (3.4 Pa, i.e. 1.4e-10 Pa) after 200 steps, against the comparison's 1e-12.
+// Likely the ranks' last-bit differences in the cells' porosity times M = 1.45e7 Pa (1e-17 in n
+// is 2e-10 Pa of Pi), not a wrong window cell (that would be O(Pi)); not yet shown. To settle
+// before close packing leaves its opt-in: docs/piping.md, "Close packing held".
+TEST(ColumnOnRanks, DISABLED_ClosePackingStepsAsOnOneRank) {
+    // the random bed with its densest packing at its mean porosity (min_porosity = n0 = 0.38): the
+    // points of the denser half start clipped at n_min, and the grid's cells past it take close
+    // packing's push (solver/PackingPressure.cpp; on one rank it moves the gate flux in the fourth
+    // digit within these 200 steps), across the cuts
+    compareWithOneRank<2>(randomBed({"grid.width=0.1488", "materials.sand.min_porosity=0.38",
+                                     "materials.sand.close_packing=true"}));
+}
+
 TEST(ColumnOnRanks, UGimpStepsAsOnOneRank) {
     compareWithOneRank<2>(randomBed({"grid.width=0.1488", "grid.shape_functions=\"gimp\""}));
 }
