@@ -42,7 +42,9 @@ stage_done "ctest:"
 # script before the suite's summary line.
 sanitizer_stage() {
     local dir="${build_dir}-sanitize"
-    cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DQUICKSAND_SANITIZE=ON \
+    # line tables only (-g1): ASan's reports keep file and line, and the build takes 449 s instead
+    # of 604 s here (2026-12-08), a quarter of the stage
+    cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O2 -g1 -DNDEBUG" -DQUICKSAND_SANITIZE=ON \
         -DQUICKSAND_WITH_OPENFOAM=OFF -DQUICKSAND_WITH_PYTHON=OFF -DQUICKSAND_BUILD_BENCHMARKS=OFF >/dev/null || return 1
     # only what those labels run: the verification, validation and MPI binaries, the larger
     # part of a build, are not run here (CI's 45 minutes)
