@@ -206,7 +206,7 @@ void printCheckReport(const CaseConfig& config, std::ostream& out) {
             << (kappa / mu) / (1 / Eoed + n / KL) << " m2/s\n";
         printFluidised(out, config, m);
         if (m.closePacking) {
-            const double M = ClosePacking::modulusFor(schemeWaveSpeed(config) / 2, m.grainDensity, m.minPorosity);
+            const double M = ClosePacking::modulusForStep(schemeWaveSpeed(config), m.grainDensity, m.minPorosity);
             out << "  close packing held below n_min           M = " << M << " Pa (a packing wave at half the step's "
                 << schemeWaveSpeed(config) << " m/s): a kPa holds a cell " << 1e3 * (1 - m.minPorosity) / M
                 << " under n_min\n";

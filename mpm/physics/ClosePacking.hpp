@@ -1,6 +1,6 @@
 #pragma once
 // Close packing: grains that touch at their densest packing n_min cannot close up further
-// (issue 42, item 3; docs/piping.md, "Packing").
+// (issue 42, item 3; docs/piping.md, "Close packing held").
 //
 // Why. A material point is a parcel of grains, not a volume that tiles space: the grid reads a
 // cell's sand porosity from the mass its points bring (PointsToGrid.cpp), and nothing in the step
@@ -40,6 +40,10 @@ struct ClosePacking {
     /// M for a packing wave at `waveSpeed` (m/s) on grains of density rho_s at close packing.
     static Real modulusFor(Real waveSpeed, Real grainDensity, Real minPorosity) {
         return (1 - minPorosity) * grainDensity * waveSpeed * waveSpeed;
+    }
+    /// M of a case whose step is sized by `stepWaveSpeed` (m/s): its packing wave at half that speed
+    static Real modulusForStep(Real stepWaveSpeed, Real grainDensity, Real minPorosity) {
+        return modulusFor(stepWaveSpeed / 2, grainDensity, minPorosity);
     }
     /// Pa, the contact pressure at porosity n
     Real pressure(Real n) const { return n < minPorosity ? modulus * (minPorosity - n) / (1 - minPorosity) : 0; }

@@ -55,7 +55,7 @@ DoublePointSolver<D>::DoublePointSolver(const CaseConfig& config, ReservoirModel
         s.elasticForce = {m.particleGrainSize, m.grainDensity, config.liquid.density, config.gravity};
         anyParticlePhase_ = anyParticlePhase_ || s.particlePhase;
         s.packing.minPorosity = m.minPorosity;
-        if (m.closePacking) s.packing.modulus = ClosePacking::modulusFor(waveSpeed_ / 2, m.grainDensity, m.minPorosity);
+        if (m.closePacking) s.packing.modulus = ClosePacking::modulusForStep(waveSpeed_, m.grainDensity, m.minPorosity);
         anyClosePacking_ = anyClosePacking_ || m.closePacking;
         materials_.push_back(s);
     }
